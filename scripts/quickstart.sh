@@ -1,0 +1,9 @@
+#!/usr/bin/env bash
+# Quick start (a): set up, build in Release, run `diffuv param` on CGAL's mushroom.off.
+# Results are written to ./diffuv-out/.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/setup.sh
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build build -j"$(nproc)" --target diffuv
+build/src/diffuv param -o diffuv-out "$@"

@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# Installs every Debian package diffuv's build, tests and examples need.
+# Idempotent: does nothing (and prints nothing) when all are present.
+set -euo pipefail
+
+packages=(
+  cmake g++ make ccache
+  libcgal-dev libgmp-dev libmpfr-dev   # CGAL: Surface_mesh, BGL traits, kd-tree, IO, parameterizers
+  libcgal-demo                         # CGAL's data set: data.tar.gz / examples.tar.gz
+  libboost-dev libboost-graph-dev      # Boost.Graph (Dijkstra reference), Boost.Heap
+  libeigen3-dev                        # linear algebra for CGAL's parameterizers
+  libgtest-dev                         # tests
+  libcli11-dev                         # the diffuv command line
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+
+SUDO=""
+[ "$(id -u)" -ne 0 ] && SUDO="sudo"
+echo "setup: installing ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
