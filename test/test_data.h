@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <map>
+#include <vector>
 #include <string>
 
 namespace diffuv_test {
@@ -37,6 +38,40 @@ inline const Mesh& cgal_mesh(const std::string& name)
     it = cache.emplace(name, std::move(m)).first;
   }
   return it->second;
+}
+
+/// A flat (nx by ny cells) grid of the unit square in the z = 0 plane, each cell
+/// cut into two counter-clockwise triangles (normals along +z). Vertex
+/// (i, j) has index j * (nx + 1) + i and lies at (i / nx, j / ny).
+inline Mesh make_grid(std::size_t nx, std::size_t ny)
+{
+  Mesh m;
+  std::vector<Mesh::Vertex_index> v;
+  for(std::size_t j = 0; j <= ny; ++j)
+    for(std::size_t i = 0; i <= nx; ++i)
+      v.push_back(m.add_vertex(Point_3(double(i) / nx, double(j) / ny, 0.)));
+  auto at = [&](std::size_t i, std::size_t j) { return v[j * (nx + 1) + i]; };
+  for(std::size_t j = 0; j < ny; ++j)
+    for(std::size_t i = 0; i < nx; ++i) {
+      m.add_face(at(i, j), at(i + 1, j), at(i + 1, j + 1));
+      m.add_face(at(i, j), at(i + 1, j + 1), at(i, j + 1));
+    }
+  return m;
+}
+
+/// Vertex (i, j) of a grid made by make_grid(nx, ...).
+inline Mesh::Vertex_index grid_vertex(std::size_t nx, std::size_t i, std::size_t j)
+{
+  return Mesh::Vertex_index(static_cast<Mesh::size_type>(j * (nx + 1) + i));
+}
+
+/// Signed area of a face in the uv map given as a vertex -> Point_2 function.
+template <class UvOf>
+double signed_uv_area(const Mesh& m, Mesh::Face_index f, UvOf uv_of)
+{
+  auto h = m.halfedge(f);
+  const Point_2 a = uv_of(m.source(h)), b = uv_of(m.target(h)), c = uv_of(m.target(m.next(h)));
+  return 0.5 * ((b.x() - a.x()) * (c.y() - a.y()) - (c.x() - a.x()) * (b.y() - a.y()));
 }
 
 } // namespace diffuv_test

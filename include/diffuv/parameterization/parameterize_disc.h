@@ -1,0 +1,79 @@
+// diffuv: a whole disc mesh parameterized as one patch with four corners.
+#ifndef DIFFUV_PARAMETERIZATION_PARAMETERIZE_DISC_H
+#define DIFFUV_PARAMETERIZATION_PARAMETERIZE_DISC_H
+
+#include <diffuv/atlas/Uv_atlas.h>
+#include <diffuv/error.h>
+#include <diffuv/graph/edge_length_map.h>
+#include <diffuv/graph/heap_tags.h>
+#include <diffuv/parameterization/diffusion_coordinates.h>
+#include <diffuv/patches/disc_topology.h>
+#include <diffuv/patches/four_sides.h>
+
+#include <boost/graph/graph_traits.hpp>
+
+#include <vector>
+
+namespace diffuv {
+
+/// Parameterizes the disc mesh `tm` as a single chart of `atlas`.
+///
+/// The mesh is checked to be a disc (`check_disc()`), its boundary loop is cut
+/// into four sides at `corners` (`corners[0]` goes to (0,0), the others follow
+/// counter-clockwise, see four_sides.h) or, if `corners` is empty, at
+/// `equal_arc_corners()`; the diffusion coordinates of every vertex fill the chart.
+///
+/// \tparam TriangleMesh a model of `FaceListGraph` with internal indices and vertex points
+///         (e.g. `CGAL::Surface_mesh`)
+/// \param tm the mesh, which `atlas` maps
+/// \param corners four boundary vertices, or none to choose them automatically
+/// \param atlas receives one chart holding every face and vertex of `tm`
+/// \param sides if not null, receives the four sides used
+/// \returns the first problem met (not a disc, bad corners, ...) or `ok`; on failure
+///          `atlas` is unchanged
+template <class TriangleMesh, class HeapTag = Fibonacci_heap_tag>
+Status parameterize_disc(const TriangleMesh& tm,
+                         const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& corners,
+                         Uv_atlas<TriangleMesh>& atlas,
+                         Four_sides<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>* sides = nullptr,
+                         HeapTag = HeapTag())
+{
+  using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
+  using Point_2 = typename Uv_atlas<TriangleMesh>::Point_2;
+
+  Status status = check_disc(tm);
+  if(!status) return status;
+
+  const std::vector<vertex_descriptor> loop = counterclockwise_boundary(tm, boundary_loops(tm).front());
+  if(loop.size() < 4)
+    return Status(Status_code::border_too_short, std::to_string(loop.size()) + " boundary vertices");
+  const std::vector<vertex_descriptor> chosen =
+      corners.empty() ? equal_arc_corners(tm, get(CGAL::vertex_point, tm), loop) : corners;
+
+  Four_sides<vertex_descriptor> four;
+  status = sides_from_corners(loop, chosen, four);
+  if(!status) return status;
+
+  auto index = get(boost::vertex_index, tm);
+  std::vector<Point_2> uv_of(num_vertices(tm));
+  Diffusion_coordinates<TriangleMesh, HeapTag> coordinates(tm);
+  status = coordinates.compute(four, edge_length_map(tm), boost::make_iterator_property_map(uv_of.begin(), index));
+  if(!status) return status;
+
+  std::vector<vertex_descriptor> chart_vertices;
+  std::vector<Point_2> chart_uv;
+  chart_vertices.reserve(num_vertices(tm));
+  chart_uv.reserve(num_vertices(tm));
+  for(vertex_descriptor v : vertices(tm)) {
+    chart_vertices.push_back(v);
+    chart_uv.push_back(uv_of[get(index, v)]);
+  }
+  std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> chart_faces(faces(tm).begin(), faces(tm).end());
+  atlas.add_chart(std::move(chart_faces), std::move(chart_vertices), std::move(chart_uv));
+  if(sides) *sides = std::move(four);
+  return Status();
+}
+
+} // namespace diffuv
+
+#endif // DIFFUV_PARAMETERIZATION_PARAMETERIZE_DISC_H

@@ -1,0 +1,188 @@
+// diffuv: the boundary loop of a disc patch cut into four sides.
+//
+// The paper (section 2.7) needs four "edges" E_u1, E_v1, E_u2, E_v2 of each
+// patch, like the sides of a rectangle, as source sets of the diffusion.
+// Convention (counter-clockwise, so that charts are not mirrored):
+//
+//       corners[3] ---- v2 (v = 1) ---- corners[2]
+//           |                               |
+//       u1 (u = 0)                      u2 (u = 1)
+//           |                               |
+//       corners[0] ---- v1 (v = 0) ---- corners[1]
+//
+// corners[0] goes to (0,0), corners[1] to (1,0), corners[2] to (1,1),
+// corners[3] to (0,1), and they follow each other along the boundary in the
+// direction of the faces' orientation (counter-clockwise seen from the side
+// the face normals point to). Each side includes both its corners, so a
+// corner belongs to the two sides that meet there.
+#ifndef DIFFUV_PATCHES_FOUR_SIDES_H
+#define DIFFUV_PATCHES_FOUR_SIDES_H
+
+#include <diffuv/error.h>
+
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/squared_distance_3.h>
+#include <CGAL/Kernel/global_functions.h>
+
+#include <boost/graph/graph_traits.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace diffuv {
+
+/// The four sides of a disc patch, each a polyline of boundary vertices.
+template <class VertexDescriptor>
+struct Four_sides {
+  std::array<VertexDescriptor, 4> corners; ///< (0,0), (1,0), (1,1), (0,1), counter-clockwise
+  std::vector<VertexDescriptor> v1;        ///< corners[0] .. corners[1], where v = 0
+  std::vector<VertexDescriptor> u2;        ///< corners[1] .. corners[2], where u = 1
+  std::vector<VertexDescriptor> v2;        ///< corners[2] .. corners[3], where v = 1
+  std::vector<VertexDescriptor> u1;        ///< corners[3] .. corners[0], where u = 0
+};
+
+/// Returns the vertices of the boundary loop that contains the border halfedge
+/// `border`, counter-clockwise around the patch (in the direction of the faces'
+/// orientation: the interior is on the left).
+///
+/// \tparam FaceGraph a model of `FaceGraph`
+/// \param border a halfedge with `is_border(border, tm)`
+template <class FaceGraph>
+std::vector<typename boost::graph_traits<FaceGraph>::vertex_descriptor>
+counterclockwise_boundary(const FaceGraph& tm, typename boost::graph_traits<FaceGraph>::halfedge_descriptor border)
+{
+  // Border halfedges run clockwise around the patch (their opposite halfedges
+  // belong to the faces, which are counter-clockwise); reverse their order.
+  std::vector<typename boost::graph_traits<FaceGraph>::vertex_descriptor> loop;
+  for(auto h : CGAL::halfedges_around_face(border, tm))
+    loop.push_back(target(h, tm));
+  std::reverse(loop.begin(), loop.end());
+  return loop;
+}
+
+/// Cuts a counter-clockwise boundary loop into four sides at the given corners.
+///
+/// `corners[0]` goes to (0,0); the three others may be given in any order:
+/// they are sorted by their position along the loop after `corners[0]`.
+///
+/// \param loop the boundary, as returned by `counterclockwise_boundary()`
+/// \param corners four distinct vertices of `loop`
+/// \param sides receives the sides when the result is `ok`
+/// \returns `corner_count`, `corner_duplicated`, `corner_not_on_border` (detail: the
+///          position of the corner in `corners`) or `ok`
+template <class VertexDescriptor>
+Status sides_from_corners(const std::vector<VertexDescriptor>& loop, const std::vector<VertexDescriptor>& corners,
+                          Four_sides<VertexDescriptor>& sides)
+{
+  if(corners.size() != 4)
+    return Status(Status_code::corner_count, std::to_string(corners.size()) + " given");
+  if(loop.size() < 4)
+    return Status(Status_code::border_too_short, std::to_string(loop.size()) + " boundary vertices");
+  std::array<std::size_t, 4> position{};
+  for(std::size_t c = 0; c < 4; ++c) {
+    for(std::size_t d = 0; d < c; ++d)
+      if(corners[d] == corners[c])
+        return Status(Status_code::corner_duplicated, "corners " + std::to_string(d + 1) + " and " + std::to_string(c + 1));
+    const auto it = std::find(loop.begin(), loop.end(), corners[c]);
+    if(it == loop.end())
+      return Status(Status_code::corner_not_on_border, "corner " + std::to_string(c + 1));
+    position[c] = static_cast<std::size_t>(it - loop.begin());
+  }
+  // Positions along the loop, counted from corners[0].
+  const std::size_t n = loop.size();
+  std::array<std::size_t, 4> offset{};
+  for(std::size_t c = 0; c < 4; ++c) offset[c] = (position[c] + n - position[0]) % n;
+  std::array<std::size_t, 4> order = {0, 1, 2, 3};
+  std::sort(order.begin() + 1, order.end(), [&](std::size_t a, std::size_t b) { return offset[a] < offset[b]; });
+
+  for(std::size_t c = 0; c < 4; ++c) sides.corners[c] = corners[order[c]];
+  auto arc = [&](std::size_t from, std::size_t to) { // inclusive, along the loop
+    std::vector<VertexDescriptor> side;
+    const std::size_t a = offset[order[from]];
+    const std::size_t b = (to == 0) ? n : offset[order[to]];
+    for(std::size_t k = a; k <= b; ++k) side.push_back(loop[(position[0] + k) % n]);
+    return side;
+  };
+  sides.v1 = arc(0, 1);
+  sides.u2 = arc(1, 2);
+  sides.v2 = arc(2, 3);
+  sides.u1 = arc(3, 0);
+  return Status();
+}
+
+/// Chooses four corners on a boundary loop automatically: the first is the
+/// boundary vertex with the smallest interior angle (the sharpest corner of
+/// the patch; the lowest vertex index on a tie), the three others cut the loop
+/// into four arcs of equal length (the vertex nearest to each quarter of the
+/// length, kept distinct and in order).
+///
+/// The rule depends on the surface only, not on coordinates' axes.
+///
+/// \tparam TriangleMesh a model of `FaceGraph` with an internal vertex index
+/// \tparam VertexPointMap a `ReadablePropertyMap` from vertices to a CGAL `Point_3`
+/// \pre `loop` is a counter-clockwise boundary loop of `tm` with at least four vertices
+/// \returns the corners in counter-clockwise order, `[0]` first
+template <class TriangleMesh, class VertexPointMap>
+std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>
+equal_arc_corners(const TriangleMesh& tm, VertexPointMap vpm,
+                  const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& loop)
+{
+  const std::size_t n = loop.size();
+  auto vindex = get(boost::vertex_index, tm);
+
+  // Interior angle at each boundary vertex: the sum of its faces' angles there.
+  auto interior_angle = [&](auto v) {
+    double sum = 0;
+    for(auto h : CGAL::halfedges_around_target(halfedge(v, tm), tm)) {
+      if(is_border(h, tm)) continue;
+      const auto p = get(vpm, v);
+      const auto a = get(vpm, source(h, tm));
+      const auto b = get(vpm, target(next(h, tm), tm));
+      const auto va = a - p, vb = b - p;
+      const double la = std::sqrt(CGAL::to_double(va.squared_length()));
+      const double lb = std::sqrt(CGAL::to_double(vb.squared_length()));
+      if(la > 0 && lb > 0)
+        sum += std::acos(std::clamp(CGAL::to_double(va * vb) / (la * lb), -1., 1.));
+    }
+    return sum;
+  };
+  std::size_t start = 0;
+  double sharpest = interior_angle(loop[0]);
+  for(std::size_t i = 1; i < n; ++i) {
+    const double a = interior_angle(loop[i]);
+    if(a < sharpest || (a == sharpest && get(vindex, loop[i]) < get(vindex, loop[start]))) {
+      sharpest = a;
+      start = i;
+    }
+  }
+
+  // Arc length from the start vertex, counter-clockwise.
+  std::vector<double> arc(n + 1, 0.);
+  for(std::size_t k = 0; k < n; ++k) {
+    const auto a = get(vpm, loop[(start + k) % n]);
+    const auto b = get(vpm, loop[(start + k + 1) % n]);
+    arc[k + 1] = arc[k] + std::sqrt(CGAL::to_double(CGAL::squared_distance(a, b)));
+  }
+  const double total = arc[n];
+  std::array<std::size_t, 4> k_of{0, 0, 0, 0};
+  for(std::size_t c = 1; c < 4; ++c) {
+    const double target_length = total * static_cast<double>(c) / 4.;
+    std::size_t k = static_cast<std::size_t>(std::lower_bound(arc.begin(), arc.end(), target_length) - arc.begin());
+    if(k > 0 && target_length - arc[k - 1] <= arc[k] - target_length) --k;
+    // Keep corners distinct and ordered, leaving room for the ones after.
+    k = std::max(k, k_of[c - 1] + 1);
+    k = std::min(k, n - (4 - c));
+    k_of[c] = k;
+  }
+  std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor> corners;
+  for(std::size_t c = 0; c < 4; ++c) corners.push_back(loop[(start + k_of[c]) % n]);
+  return corners;
+}
+
+} // namespace diffuv
+
+#endif // DIFFUV_PATCHES_FOUR_SIDES_H
