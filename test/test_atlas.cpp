@@ -4,7 +4,7 @@
 #include <diffuv/atlas/Uv_atlas.h>
 #include <diffuv/parameterization/parameterize_disc.h>
 
-#include <CGAL/Polygon_mesh_processing/border.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polygon_mesh_processing/locate.h>
 #include <CGAL/Surface_mesh_parameterization/Mean_value_coordinates_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/parameterize.h>

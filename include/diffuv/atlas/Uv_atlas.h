@@ -202,6 +202,14 @@ public:
     });
   }
 
+  /// A vertex property map: the (u,v) of each vertex in chart `c` ((NaN, NaN) for a
+  /// vertex not in it). Feeds per-chart algorithms such as `measure_distortion()`.
+  auto chart_uv_map(std::size_t c) const
+  {
+    return boost::make_function_property_map<vertex_descriptor>(
+        [this, c](vertex_descriptor v) { return uv_in_chart(v, c); });
+  }
+
   /// A vertex property map: the index of each vertex's first chart (`no_chart` if in none).
   auto vertex_chart_map() const
   {
@@ -221,10 +229,7 @@ public:
       if(is_border(h, mesh_)) return Point_2(nan, nan);
       const std::size_t c = chart_of(face(h, mesh_));
       if(c == no_chart) return Point_2(nan, nan);
-      auto e = entries(target(h, mesh_));
-      for(const Entry* it = e.first; it != e.second; ++it)
-        if(it->chart == c) return uv(c, it->local);
-      return Point_2(nan, nan);
+      return uv_in_chart(target(h, mesh_), c);
     });
   }
 
@@ -280,6 +285,15 @@ public:
   }
 
 private:
+  Point_2 uv_in_chart(vertex_descriptor v, std::size_t c) const
+  {
+    auto e = entries(v);
+    for(const Entry* it = e.first; it != e.second; ++it)
+      if(it->chart == c) return uv(c, it->local);
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    return Point_2(nan, nan);
+  }
+
   Uv_location<TriangleMesh> make_location(const Chart& chart, std::size_t f, const std::array<double, 3>& bary,
                                           bool inside, double distance) const
   {

@@ -10,7 +10,6 @@
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
-#include <CGAL/Polygon_mesh_processing/repair.h>
 
 #include <boost/graph/graph_traits.hpp>
 
@@ -54,11 +53,18 @@ Status check_disc(const TriangleMesh& tm)
   for(auto f : faces(tm))
     if(!CGAL::is_triangle(halfedge(f, tm), tm))
       return Status(Status_code::not_triangle_mesh, "face " + std::to_string(get(findex, f)));
+  // A vertex is manifold when the halfedges around it (one fan, walked from
+  // halfedge(v)) are all the halfedges pointing to it. Counting both in one
+  // pass is O(H); PMP::is_non_manifold_vertex() is O(H) per vertex.
+  std::vector<std::size_t> incoming(num_vertices(tm), 0);
+  for(auto h : halfedges(tm)) ++incoming[get(vindex, target(h, tm))];
   for(auto v : vertices(tm)) {
     if(halfedge(v, tm) == boost::graph_traits<TriangleMesh>::null_halfedge())
       return Status(Status_code::disconnected_mesh,
                     "vertex " + std::to_string(get(vindex, v)) + " belongs to no face");
-    if(PMP::is_non_manifold_vertex(v, tm))
+    std::size_t fan = 0;
+    for(auto h : CGAL::halfedges_around_target(halfedge(v, tm), tm)) { (void)h; ++fan; }
+    if(fan != incoming[get(vindex, v)])
       return Status(Status_code::non_manifold, "vertex " + std::to_string(get(vindex, v)));
   }
   std::vector<std::size_t> component(num_faces(tm));
