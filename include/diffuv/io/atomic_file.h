@@ -1,0 +1,151 @@
+// diffuv: files that appear whole or not at all.
+//
+// Every file diffuv writes goes through `Atomic_output_file`: the text is
+// written to a hidden temporary file next to the target, and renamed onto the
+// target only once everything was written and flushed without error. A run
+// that fails half-way (an exception, a full disk, a killed process) leaves the
+// previous file, or no file, never a truncated one that a later step would
+// read as valid.
+#ifndef DIFFUV_IO_ATOMIC_FILE_H
+#define DIFFUV_IO_ATOMIC_FILE_H
+
+#include <diffuv/error.h>
+
+#include <unistd.h> // getpid
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <ostream>
+#include <string>
+#include <system_error>
+
+namespace diffuv {
+
+/// Writes a file through a temporary file that is renamed onto the target by
+/// `commit()`, so that the target is either the old file or the complete new one.
+///
+/// The temporary file is `<dir>/.<name>.tmp.<pid>`, in the folder of the
+/// target: `std::rename` is atomic only within one file system. Two objects of
+/// one process writing the same target at the same time would share it.
+/// If `commit()` is not called (an exception unwinds, or an error was found),
+/// the destructor removes the temporary file and the target is untouched.
+///
+/// The rename protects against a failure of the program, not against a power
+/// loss (the data is not `fsync`ed).
+class Atomic_output_file {
+public:
+  /// Creates the temporary file for `target`.
+  /// \param target the path of the file to write; its folder must exist
+  ///        (see `ensure_output_directory()`)
+  /// \throws Output_error naming `target` if the temporary file cannot be
+  ///         created (missing folder, no permission)
+  explicit Atomic_output_file(const std::string& target)
+    : target_(target), temporary_(temporary_path_for(target))
+  {
+    file_.open(temporary_, std::ios::out | std::ios::trunc | std::ios::binary);
+    if(!file_.is_open()) {
+      const int e = errno;
+      throw Output_error(target_, "cannot create the temporary file " + temporary_ +
+                                  " (" + std::strerror(e) + ")");
+    }
+  }
+
+  Atomic_output_file(const Atomic_output_file&) = delete;
+  Atomic_output_file& operator=(const Atomic_output_file&) = delete;
+
+  /// Removes the temporary file if `commit()` did not rename it.
+  ~Atomic_output_file()
+  {
+    if(!committed_) {
+      file_.close();
+      std::remove(temporary_.c_str()); // nothing to report from a destructor
+    }
+  }
+
+  /// Returns the stream to write the content to.
+  std::ostream& stream() { return file_; }
+
+  /// Returns the path of the target file.
+  const std::string& path() const { return target_; }
+
+  /// Returns the path of the temporary file.
+  const std::string& temporary_path() const { return temporary_; }
+
+  /// Flushes and closes the temporary file and renames it onto the target.
+  /// Does nothing if already committed.
+  /// \throws Output_error naming the target if a write failed (disk full,
+  ///         I/O error, a stream state set by the caller) or the rename fails;
+  ///         the temporary file is then removed and the target is untouched
+  void commit()
+  {
+    if(committed_)
+      return;
+    // A full disk shows up at the flush, or only at the close when the last
+    // buffer is written: check the stream after both.
+    file_.flush();
+    const bool written = static_cast<bool>(file_);
+    file_.close();
+    if(!written || file_.fail()) {
+      std::remove(temporary_.c_str());
+      throw Output_error(target_, "writing failed (disk full or I/O error)");
+    }
+    if(std::rename(temporary_.c_str(), target_.c_str()) != 0) {
+      const int e = errno;
+      std::remove(temporary_.c_str());
+      throw Output_error(target_, "cannot rename the temporary file " + temporary_ +
+                                  " onto it (" + std::strerror(e) + ")");
+    }
+    committed_ = true;
+  }
+
+private:
+  static std::string temporary_path_for(const std::string& target)
+  {
+    const std::filesystem::path p(target);
+    const std::string name = "." + p.filename().string() + ".tmp." + std::to_string(::getpid());
+    return (p.parent_path() / name).string();
+  }
+
+  std::string target_;
+  std::string temporary_;
+  std::ofstream file_;
+  bool committed_ = false;
+};
+
+/// Makes sure that `dir` is a folder diffuv can write into, creating it
+/// (and its parents) if it does not exist.
+///
+/// Writability is tested by creating and removing a probe file, because
+/// permission bits do not tell the whole story (read-only mounts, ACLs, root).
+/// \param dir the folder; an empty string means the current folder
+/// \throws Output_error naming `dir` if it exists and is not a folder, cannot
+///         be created, or is not writable
+inline void ensure_output_directory(const std::string& dir)
+{
+  namespace fs = std::filesystem;
+  const fs::path p(dir.empty() ? std::string(".") : dir);
+  std::error_code ec;
+  const fs::file_status status = fs::status(p, ec);
+  if(fs::exists(status)) {
+    if(!fs::is_directory(status))
+      throw Output_error(dir, "exists and is not a directory");
+  } else {
+    fs::create_directories(p, ec);
+    if(ec)
+      throw Output_error(dir, "cannot create the directory (" + ec.message() + ")");
+  }
+
+  const fs::path probe = p / (".diffuv_probe." + std::to_string(::getpid()));
+  std::ofstream f(probe, std::ios::out | std::ios::trunc);
+  if(!f.is_open())
+    throw Output_error(dir, "the directory is not writable");
+  f.close();
+  fs::remove(probe, ec); // a leftover hidden probe file is harmless
+}
+
+} // namespace diffuv
+
+#endif // DIFFUV_IO_ATOMIC_FILE_H

@@ -1,0 +1,752 @@
+// diffuv: reading a triangle mesh whose vertex numbering is the file's.
+//
+// Everything downstream of the reader refers to vertices by index: corner
+// and source selections, label files, correspondences between two meshes.
+// Those indices are the file's, so the reader must give vertex i of the mesh
+// the i-th point of the file. `CGAL::IO::read_polygon_mesh` does not promise
+// that: when the soup is not a valid mesh it repairs and reorients it, merging
+// or duplicating points. This reader instead reads the polygon soup, rejects
+// anything that would need a repair with a message naming the file, the line
+// and the element, and only then builds the mesh.
+//
+// Elements are numbered from 0 in file order in every message, as in the
+// mesh (vertex 0 is the first vertex of the file); only a vertex index that
+// is out of range is quoted as written in the file (from 1 in OBJ).
+#ifndef DIFFUV_IO_READ_MESH_H
+#define DIFFUV_IO_READ_MESH_H
+
+#include <diffuv/error.h>
+
+#include <CGAL/IO/OBJ.h>
+#include <CGAL/IO/OFF.h>
+#include <CGAL/IO/PLY.h>
+#include <CGAL/IO/STL.h>
+#include <CGAL/Polygon_mesh_processing/manifoldness.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/shape_predicates.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
+#include <CGAL/boost/graph/Euler_operations.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/boost/graph/properties.h>
+#include <CGAL/number_utils.h>
+
+#include <boost/graph/graph_traits.hpp>
+#include <boost/property_map/property_map.hpp>
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <istream>
+#include <iterator>
+#include <limits>
+#include <map>
+#include <sstream>
+#include <string>
+#include <system_error>
+#include <utility>
+#include <vector>
+
+namespace diffuv {
+
+/// What `read_triangle_mesh()` read and what it changed.
+struct Mesh_read_report {
+  std::size_t vertices = 0;              ///< points of the file = vertices of the mesh, in the same order
+  std::size_t faces_in_file = 0;         ///< polygons of the file
+  std::size_t polygons_triangulated = 0; ///< polygons of more than three vertices split into triangles
+  std::size_t faces = 0;                 ///< triangles of the mesh
+  std::size_t degenerate_faces = 0;      ///< triangles of zero area (collinear or coinciding corners)
+  std::size_t isolated_vertices = 0;     ///< points used by no face, kept so that indices stay those of the file
+};
+
+namespace internal {
+
+enum class Mesh_format { off, obj, ply, stl };
+
+inline const char* format_name(Mesh_format format)
+{
+  switch(format) {
+    case Mesh_format::off: return "OFF";
+    case Mesh_format::obj: return "OBJ";
+    case Mesh_format::ply: return "PLY";
+    case Mesh_format::stl: return "STL";
+  }
+  return "mesh"; // unreachable for valid enum values
+}
+
+/// The format named by the extension of `path`, case-insensitively.
+inline Mesh_format mesh_format(const std::string& path)
+{
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if(ext == ".off") return Mesh_format::off;
+  if(ext == ".obj") return Mesh_format::obj;
+  if(ext == ".ply") return Mesh_format::ply;
+  if(ext == ".stl") return Mesh_format::stl;
+  if(ext.empty())
+    throw Input_error(path, 0, "the file name has no extension (expected .off, .obj, .ply or .stl)");
+  throw Input_error(path, 0, "unknown mesh file extension \"" + std::filesystem::path(path).extension().string() +
+                             "\" (expected .off, .obj, .ply or .stl)");
+}
+
+/// An index as the file wrote it: PLY's signed indices come back from CGAL
+/// as huge unsigned ones.
+inline std::string index_text(std::size_t index)
+{
+  if(index > static_cast<std::size_t>(std::numeric_limits<long long>::max()))
+    return std::to_string(static_cast<long long>(index));
+  return std::to_string(index);
+}
+
+inline std::string out_of_range_message(std::size_t face, const std::string& index, std::size_t nb_vertices)
+{
+  return "face " + std::to_string(face) + " has vertex index " + index + ", out of range (the file has " +
+         std::to_string(nb_vertices) + " vertices)";
+}
+
+inline std::string non_finite_message(std::size_t vertex)
+{
+  return "vertex " + std::to_string(vertex) + " has a coordinate that is NaN or infinite";
+}
+
+/// True if the whole of `token` is a number in C syntax that is not finite
+/// ("nan", "inf", "1e999"): `operator>>` refuses those, so CGAL's readers
+/// report a syntax error where the user needs to hear about the value.
+inline bool is_non_finite_number(const std::string& token)
+{
+  if(token.empty())
+    return false;
+  char* end = nullptr;
+  const double d = std::strtod(token.c_str(), &end);
+  return end == token.c_str() + token.size() && !std::isfinite(d);
+}
+
+/// The numbers at the start of `line` (up to a `#` comment), read with
+/// `operator>>` as CGAL's OFF scanner reads them; `stop` is the first
+/// whitespace-separated token that was not read, if any (`operator>>`
+/// consumes "1e999" before failing, so the token is not taken from the stream).
+inline std::vector<double> leading_numbers(std::string line, std::string& stop)
+{
+  const std::size_t hash = line.find('#');
+  if(hash != std::string::npos)
+    line.erase(hash);
+  std::istringstream in(line);
+  std::vector<double> numbers;
+  double d;
+  while(in >> d)
+    numbers.push_back(d);
+  std::istringstream tokens(line);
+  stop.clear();
+  for(std::size_t k = 0; k <= numbers.size() && tokens >> stop; ++k) {}
+  if(!tokens)
+    stop.clear();
+  return numbers;
+}
+
+/// Where the vertices and faces of a text mesh file are, and the first
+/// problem met when reading it the way CGAL reads it. CGAL's readers answer
+/// only true or false; this second, line-counting pass turns a `false` into
+/// a line and a reason, and gives the line of an element named in a later
+/// check. Lines count from 1; 0 means unknown.
+struct Text_mesh_scan {
+  std::vector<std::size_t> vertex_line;
+  std::vector<std::size_t> face_line;
+  std::size_t error_line = 0;
+  std::string error; ///< empty if no problem was found
+};
+
+/// An input stream that counts lines.
+class Line_counting_reader {
+public:
+  explicit Line_counting_reader(std::istream& in) : in_(in) {}
+
+  std::size_t line() const { return line_; }
+
+  int peek() { return in_.peek(); }
+
+  int get()
+  {
+    const int c = in_.get();
+    if(c == '\n')
+      ++line_;
+    return c;
+  }
+
+  /// Skips white space and `#` comments, as CGAL's `skip_comment_OFF`.
+  /// Returns false at the end of the input.
+  bool skip_space_and_comments()
+  {
+    for(;;) {
+      const int c = peek();
+      if(c == std::char_traits<char>::eof())
+        return false;
+      if(c == '#')
+        rest_of_line();
+      else if(std::isspace(c))
+        get();
+      else
+        return true;
+    }
+  }
+
+  /// The characters up to white space or `#`.
+  std::string token()
+  {
+    std::string t;
+    for(int c = peek(); c != std::char_traits<char>::eof() && c != '#' && !std::isspace(c); c = peek())
+      t += static_cast<char>(get());
+    return t;
+  }
+
+  /// The characters up to the end of the line, which is consumed.
+  std::string rest_of_line()
+  {
+    std::string s;
+    for(int c = get(); c != std::char_traits<char>::eof() && c != '\n'; c = get())
+      s += static_cast<char>(c);
+    return s;
+  }
+
+private:
+  std::istream& in_;
+  std::size_t line_ = 1;
+};
+
+inline bool parse_count(const std::string& token, long long& value)
+{
+  const char* first = token.data();
+  const char* last = first + token.size();
+  const auto [end, ec] = std::from_chars(first, last, value);
+  return ec == std::errc() && end == last;
+}
+
+/// Scans an OFF file like CGAL's `File_scanner_OFF`: header, then one vertex
+/// per line, then one face per line. With `header_only`, stops after the
+/// header, whose counts are checked against the size of the file: CGAL
+/// resizes its arrays to the announced counts before reading them, so a
+/// corrupt header would otherwise allocate gigabytes.
+/// n-dimensional OFF ("nOFF") is not scanned; binary OFF only for its header.
+inline Text_mesh_scan scan_off(const std::string& path, std::uintmax_t file_size, bool header_only)
+{
+  Text_mesh_scan scan;
+  std::ifstream file(path, std::ios::binary);
+  Line_counting_reader in(file);
+  auto fail = [&](std::size_t line, const std::string& what) {
+    scan.error_line = line;
+    scan.error = "not a valid OFF file (" + what + ")";
+    return scan;
+  };
+
+  if(!in.skip_space_and_comments())
+    return fail(0, "the file has no OFF header");
+  const std::size_t header_line = in.line();
+  const std::string keyword = in.token();
+  // [ST][C][N][4][n]OFF, as CGAL accepts it
+  std::size_t k = 0;
+  if(keyword.compare(k, 2, "ST") == 0) k += 2;
+  if(k < keyword.size() && keyword[k] == 'C') ++k;
+  if(k < keyword.size() && keyword[k] == 'N') ++k;
+  const bool homogeneous = k < keyword.size() && keyword[k] == '4';
+  if(homogeneous) ++k;
+  const bool n_dimensional = k < keyword.size() && keyword[k] == 'n';
+  if(n_dimensional) ++k;
+  if(keyword.substr(k) != "OFF")
+    return fail(header_line, "the file does not start with an OFF header");
+  if(n_dimensional)
+    return scan;
+
+  long long nv = 0, nf = 0, ne = 0;
+  in.skip_space_and_comments();
+  std::size_t counts_line = in.line();
+  std::string token = in.token();
+  if(token == "BINARY") {
+    // Three big-endian 32-bit counts after the end of the line.
+    in.rest_of_line();
+    unsigned char bytes[12];
+    if(!file.read(reinterpret_cast<char*>(bytes), 12))
+      return fail(counts_line, "cannot read the numbers of vertices, faces and edges");
+    auto read32 = [&](int i) {
+      const std::uint32_t u = (std::uint32_t(bytes[4 * i]) << 24) | (std::uint32_t(bytes[4 * i + 1]) << 16) |
+                              (std::uint32_t(bytes[4 * i + 2]) << 8) | std::uint32_t(bytes[4 * i + 3]);
+      return static_cast<long long>(static_cast<std::int32_t>(u));
+    };
+    nv = read32(0);
+    nf = read32(1);
+    if(nv < 0 || nf < 0)
+      return fail(counts_line, "negative number of vertices or faces");
+    // At least three 4-byte floats per vertex, one 4-byte count per face.
+    if(static_cast<std::uintmax_t>(nv) * 12 + static_cast<std::uintmax_t>(nf) * 4 > file_size)
+      return fail(counts_line, "the header announces " + std::to_string(nv) + " vertices and " +
+                                   std::to_string(nf) + " faces, more than the " + std::to_string(file_size) +
+                                   " bytes of the file can hold");
+    return scan; // binary data has no lines to find
+  }
+
+  if(!parse_count(token, nv))
+    return fail(counts_line, "cannot read the numbers of vertices, faces and edges");
+  in.skip_space_and_comments();
+  counts_line = in.line();
+  if(!parse_count(in.token(), nf))
+    return fail(counts_line, "cannot read the numbers of vertices, faces and edges");
+  in.skip_space_and_comments();
+  counts_line = in.line();
+  if(!parse_count(in.token(), ne))
+    return fail(counts_line, "cannot read the numbers of vertices, faces and edges");
+  if(nv < 0 || nf < 0)
+    return fail(counts_line, "negative number of vertices or faces");
+  // Each vertex line holds at least "x y z" and an end of line, each face
+  // line at least its size and an end of line; the last line may have no end.
+  const std::uintmax_t needed = static_cast<std::uintmax_t>(nv) * 6 + static_cast<std::uintmax_t>(nf) * 2;
+  if(needed > file_size + 1)
+    return fail(counts_line, "the header announces " + std::to_string(nv) + " vertices and " +
+                                 std::to_string(nf) + " faces, more than the " + std::to_string(file_size) +
+                                 " bytes of the file can hold");
+  if(header_only)
+    return scan;
+
+  const std::size_t needed_coordinates = homogeneous ? 4 : 3;
+  std::string stop;
+  for(long long i = 0; i < nv; ++i) {
+    if(!in.skip_space_and_comments())
+      return fail(0, "the file ends before vertex " + std::to_string(i) + " of " + std::to_string(nv));
+    const std::size_t line = in.line();
+    scan.vertex_line.push_back(line);
+    const std::vector<double> numbers = leading_numbers(in.rest_of_line(), stop);
+    if(numbers.size() < needed_coordinates) {
+      if(is_non_finite_number(stop)) {
+        scan.error_line = line;
+        scan.error = non_finite_message(static_cast<std::size_t>(i));
+        return scan;
+      }
+      return fail(line, "vertex " + std::to_string(i) + " does not have " + std::to_string(needed_coordinates) +
+                            " coordinates");
+    }
+  }
+
+  for(long long j = 0; j < nf; ++j) {
+    if(!in.skip_space_and_comments())
+      return fail(0, "the file ends before face " + std::to_string(j) + " of " + std::to_string(nf));
+    const std::size_t line = in.line();
+    scan.face_line.push_back(line);
+    const std::vector<double> numbers = leading_numbers(in.rest_of_line(), stop);
+    if(numbers.empty() || numbers[0] < 0 || numbers[0] != std::floor(numbers[0]))
+      return fail(line, "face " + std::to_string(j) + " does not start with its number of vertices");
+    const std::size_t size = static_cast<std::size_t>(numbers[0]);
+    if(numbers.size() <= size)
+      return fail(line, "face " + std::to_string(j) + " lists fewer than its " + std::to_string(size) +
+                            " vertex indices");
+    for(std::size_t c = 1; c <= size; ++c) {
+      const double index = numbers[c];
+      if(index < 0 || index >= static_cast<double>(nv) || index != std::floor(index)) {
+        std::ostringstream text;
+        text << index;
+        scan.error_line = line;
+        scan.error = out_of_range_message(static_cast<std::size_t>(j), text.str(), static_cast<std::size_t>(nv));
+        return scan;
+      }
+    }
+  }
+  return scan;
+}
+
+/// Scans an OBJ file line by line like CGAL's OBJ reader.
+inline Text_mesh_scan scan_obj(const std::string& path)
+{
+  Text_mesh_scan scan;
+  std::ifstream file(path);
+  auto fail = [&](std::size_t line, const std::string& what) {
+    scan.error_line = line;
+    scan.error = "not a valid OBJ file (" + what + ")";
+    return scan;
+  };
+
+  // The keywords CGAL's reader skips without an error.
+  static const char* const ignored[] = {
+    "vt", "vn", "vp", "bevel", "lod", "ctech", "c_interp", "usemap", "usemtl", "stech", "d_interp", "mtllib",
+    "shadow_obj", "trace_obj", "o", "g", "s", "p", "cstype", "deg", "step", "bmat", "con", "curv", "curv2",
+    "surf", "parm", "trim", "hole", "scrv", "sp", "end", "surf_1", "q0_1", "q1_1", "curv2d_1", "surf_2",
+    "q0_2", "q1_2", "curv2d_2", "bsp", "bzp", "cdc", "cdp", "res"};
+
+  struct Written_face { std::size_t line, vertices_before; std::vector<int> indices; };
+  std::vector<Written_face> written;
+
+  std::string line;
+  std::size_t number = 0;
+  while(std::getline(file, line)) {
+    ++number;
+    std::istringstream in(line);
+    std::string keyword;
+    if(!(in >> keyword))
+      continue;
+    if(keyword == "v") {
+      scan.vertex_line.push_back(number);
+      double x, y, z;
+      if(!(in >> x >> y >> z)) {
+        std::string stop;
+        leading_numbers(line.substr(line.find('v') + 1), stop);
+        if(is_non_finite_number(stop)) {
+          scan.error_line = number;
+          scan.error = non_finite_message(scan.vertex_line.size() - 1);
+          return scan;
+        }
+        return fail(number, "cannot read the coordinates of vertex " + std::to_string(scan.vertex_line.size() - 1));
+      }
+    } else if(keyword == "f") {
+      scan.face_line.push_back(number);
+      Written_face face{number, scan.vertex_line.size(), {}};
+      int i;
+      while(in >> i) {
+        face.indices.push_back(i);
+        in.ignore(256, ' '); // "v/vt/vn": CGAL keeps v and skips to the next space
+      }
+      written.push_back(std::move(face));
+    } else if(keyword.front() == '#' ||
+              std::find(std::begin(ignored), std::end(ignored), keyword) != std::end(ignored)) {
+      continue;
+    } else {
+      return fail(number, "unknown keyword \"" + keyword + "\"");
+    }
+  }
+
+  // Positive indices count from 1, negative ones back from the last vertex
+  // read so far.
+  const long long nv = static_cast<long long>(scan.vertex_line.size());
+  for(std::size_t j = 0; j < written.size(); ++j) {
+    for(int i : written[j].indices) {
+      const long long resolved = i < 1 ? static_cast<long long>(written[j].vertices_before) + i : i - 1LL;
+      if(resolved < 0 || resolved >= nv) {
+        scan.error_line = written[j].line;
+        scan.error = out_of_range_message(j, std::to_string(i), scan.vertex_line.size());
+        return scan;
+      }
+    }
+  }
+  if(written.empty()) {
+    scan.error = "the file has no face";
+    return scan;
+  }
+  return scan;
+}
+
+/// The lines of a file's elements, scanned on first use: only error
+/// messages need them.
+class Line_locator {
+public:
+  Line_locator(const std::string& path, Mesh_format format, std::uintmax_t file_size)
+    : path_(path), format_(format), file_size_(file_size) {}
+
+  const Text_mesh_scan& scan()
+  {
+    if(!scanned_) {
+      if(format_ == Mesh_format::off)
+        scan_ = scan_off(path_, file_size_, false);
+      else if(format_ == Mesh_format::obj)
+        scan_ = scan_obj(path_);
+      scanned_ = true;
+    }
+    return scan_;
+  }
+
+  std::size_t vertex_line(std::size_t i)
+  {
+    const auto& lines = scan().vertex_line;
+    return i < lines.size() ? lines[i] : 0;
+  }
+
+  std::size_t face_line(std::size_t j)
+  {
+    const auto& lines = scan().face_line;
+    return j < lines.size() ? lines[j] : 0;
+  }
+
+private:
+  std::string path_;
+  Mesh_format format_;
+  std::uintmax_t file_size_;
+  Text_mesh_scan scan_;
+  bool scanned_ = false;
+};
+
+/// Names one reason why a soup whose polygons have at least three distinct,
+/// valid vertices is not a manifold oriented polygon mesh: CGAL's
+/// `is_polygon_soup_a_polygon_mesh()` only answers yes or no. Sets `face` to
+/// the face concerned, or to `std::size_t(-1)` if it is about a vertex.
+/// Returns an empty string if it finds nothing.
+inline std::string describe_non_manifold(const std::vector<std::vector<std::size_t>>& polygons,
+                                         std::size_t nb_points, std::size_t& face)
+{
+  face = std::size_t(-1);
+  // An oriented edge used twice: three faces on one edge, or two faces
+  // that disagree on the orientation.
+  std::map<std::pair<std::size_t, std::size_t>, std::size_t> edge_face;
+  for(std::size_t j = 0; j < polygons.size(); ++j) {
+    const auto& p = polygons[j];
+    for(std::size_t c = 0; c < p.size(); ++c) {
+      const std::pair<std::size_t, std::size_t> e(p[c], p[(c + 1) % p.size()]);
+      const auto [it, inserted] = edge_face.emplace(e, j);
+      if(!inserted) {
+        face = j;
+        return "faces " + std::to_string(it->second) + " and " + std::to_string(j) +
+               " both go from vertex " + std::to_string(e.first) + " to vertex " + std::to_string(e.second);
+      }
+    }
+  }
+
+  // Around a vertex v, each face (.., b, v, a, ..) links a to b; neighbouring
+  // faces share a link end. With each oriented edge used once, the links form
+  // paths and cycles, one per fan of faces: a manifold vertex has one fan.
+  std::vector<std::vector<std::pair<std::size_t, std::size_t>>> links(nb_points);
+  for(const auto& p : polygons)
+    for(std::size_t c = 0; c < p.size(); ++c)
+      links[p[c]].emplace_back(p[(c + 1) % p.size()], p[(c + p.size() - 1) % p.size()]);
+  for(std::size_t v = 0; v < nb_points; ++v) {
+    auto& link = links[v];
+    if(link.size() < 2)
+      continue;
+    std::sort(link.begin(), link.end());
+    std::vector<std::size_t> heads; // link ends that no link leads to: starts of paths
+    std::vector<std::size_t> targets;
+    for(const auto& l : link)
+      targets.push_back(l.second);
+    std::sort(targets.begin(), targets.end());
+    for(const auto& l : link)
+      if(!std::binary_search(targets.begin(), targets.end(), l.first))
+        heads.push_back(l.first);
+    std::vector<bool> used(link.size(), false);
+    auto walk = [&](std::size_t from) {
+      for(;;) {
+        const auto it = std::lower_bound(link.begin(), link.end(), std::make_pair(from, std::size_t(0)));
+        if(it == link.end() || it->first != from || used[it - link.begin()])
+          return;
+        used[it - link.begin()] = true;
+        from = it->second;
+      }
+    };
+    std::size_t fans = 0;
+    for(std::size_t h : heads) {
+      walk(h);
+      ++fans;
+    }
+    for(std::size_t l = 0; l < link.size(); ++l)
+      if(!used[l]) {
+        walk(link[l].first); // a cycle
+        ++fans;
+      }
+    if(fans > 1)
+      return "the faces around vertex " + std::to_string(v) + " form " + std::to_string(fans) + " separate fans";
+  }
+  return std::string();
+}
+
+} // namespace internal
+
+/// Reads a polygon mesh file (OFF, OBJ, PLY or STL, by extension, in any
+/// case) into a triangle mesh whose vertex i is the i-th point of the file.
+///
+/// The file is read as a polygon soup with CGAL's readers and checked
+/// before the mesh is built: at least one face; finite coordinates; faces of
+/// at least three vertex indices, in range and distinct; a manifold,
+/// consistently oriented polygon mesh. Nothing is repaired, merged or
+/// reoriented, so that indices stay those of the file.
+///
+/// Then:
+/// - points used by no face become isolated vertices (counted in the report;
+///   CGAL's `polygon_soup_to_polygon_mesh()` keeps them, in order);
+/// - each polygon with more than three vertices is split into triangles
+///   with `CGAL::Polygon_mesh_processing::triangulate_face()`, or, when that
+///   fails on a degenerate polygon, into a fan from one corner. No vertex is
+///   added; the first triangle keeps the polygon's face descriptor and the
+///   others are appended at the end of `faces(mesh)`;
+/// - zero-area triangles are kept and counted: a caller that cannot use
+///   them decides.
+///
+/// STL has no vertex list: CGAL numbers its distinct points in order of first
+/// appearance, merging identical ones.
+///
+/// \tparam TriangleMesh a model of `MutableFaceGraph` with an internal vertex
+///         point map whose points have `x()`, `y()`, `z()` and a
+///         `CGAL::Kernel_traits`; vertices and faces must be listed in insertion
+///         order (`CGAL::Surface_mesh`, `CGAL::Polyhedron_3`)
+/// \param path the file
+/// \param mesh receives the mesh; its previous content is removed. After an
+///        exception its content is unspecified.
+/// \returns the counts of what was read
+/// \throws Input_error naming `path`, with the line when it is known (ASCII
+///         OFF and OBJ) or 0, and one of these reasons:
+///   - "unknown mesh file extension ...", "the file name has no extension ..."
+///   - "cannot open file", "the file is empty"
+///   - "not a valid OFF file" (or OBJ, PLY, STL), with the problem in
+///     parentheses when it is known (OFF and OBJ)
+///   - "the file has no face"
+///   - "vertex I has a coordinate that is NaN or infinite"
+///   - "face J has vertex index X, out of range (the file has N vertices)"
+///   - "face J has only K vertices", "face J uses vertex I twice"
+///   - "non-manifold edge or vertex, or inconsistent orientation (...)"
+///   - "face J cannot be triangulated without a second edge between vertices I and K"
+///   - "vertex I is non-manifold"
+template <class TriangleMesh>
+Mesh_read_report read_triangle_mesh(const std::string& path, TriangleMesh& mesh)
+{
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  namespace fs = std::filesystem;
+  using Vertex_point_map = typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::type;
+  using Point = typename boost::property_traits<Vertex_point_map>::value_type;
+  using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
+  using halfedge_descriptor = typename boost::graph_traits<TriangleMesh>::halfedge_descriptor;
+  using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
+  using Polygon = std::vector<std::size_t>;
+
+  const internal::Mesh_format format = internal::mesh_format(path);
+  const std::string name = internal::format_name(format);
+
+  std::error_code ec;
+  if(fs::is_directory(path, ec) || !std::ifstream(path, std::ios::binary))
+    throw Input_error(path, 0, "cannot open file");
+  const std::uintmax_t file_size = fs::file_size(path, ec);
+  if(ec)
+    throw Input_error(path, 0, "cannot open file");
+  if(file_size == 0)
+    throw Input_error(path, 0, "the file is empty");
+
+  internal::Line_locator locate(path, format, file_size);
+  if(format == internal::Mesh_format::off) {
+    const internal::Text_mesh_scan header = internal::scan_off(path, file_size, true);
+    if(!header.error.empty())
+      throw Input_error(path, header.error_line, header.error);
+  }
+
+  // CGAL's stream readers of OFF and PLY print to std::cerr unless told not to.
+  std::vector<Point> points;
+  std::vector<Polygon> polygons;
+  bool read = false;
+  try {
+    const auto np = CGAL::parameters::verbose(false);
+    switch(format) {
+      case internal::Mesh_format::off: read = CGAL::IO::read_OFF(path, points, polygons, np); break;
+      case internal::Mesh_format::obj: read = CGAL::IO::read_OBJ(path, points, polygons, np); break;
+      case internal::Mesh_format::ply: read = CGAL::IO::read_PLY(path, points, polygons, np); break;
+      case internal::Mesh_format::stl: read = CGAL::IO::read_STL(path, points, polygons, np); break;
+    }
+  } catch(const std::exception& e) {
+    throw Input_error(path, 0, "not a valid " + name + " file (" + e.what() + ")");
+  }
+  if(!read) {
+    const internal::Text_mesh_scan& scan = locate.scan();
+    if(!scan.error.empty())
+      throw Input_error(path, scan.error_line, scan.error);
+    throw Input_error(path, 0, "not a valid " + name + " file");
+  }
+
+  // The soup, checked in file order so that the first problem is reported.
+  if(polygons.empty())
+    throw Input_error(path, 0, "the file has no face");
+  for(std::size_t i = 0; i < points.size(); ++i) {
+    const Point& p = points[i];
+    if(!std::isfinite(CGAL::to_double(p.x())) || !std::isfinite(CGAL::to_double(p.y())) ||
+       !std::isfinite(CGAL::to_double(p.z())))
+      throw Input_error(path, locate.vertex_line(i), internal::non_finite_message(i));
+  }
+  std::vector<bool> used(points.size(), false);
+  for(std::size_t j = 0; j < polygons.size(); ++j) {
+    const Polygon& polygon = polygons[j];
+    if(polygon.size() < 3)
+      throw Input_error(path, locate.face_line(j), "face " + std::to_string(j) + " has only " +
+                                                      std::to_string(polygon.size()) + " vertices");
+    for(std::size_t index : polygon) {
+      if(index >= points.size()) {
+        // CGAL's OBJ reader lets the index one past the last vertex through;
+        // the scan quotes the index as written.
+        if(format == internal::Mesh_format::obj && !locate.scan().error.empty())
+          throw Input_error(path, locate.scan().error_line, locate.scan().error);
+        throw Input_error(path, locate.face_line(j),
+                          internal::out_of_range_message(j, internal::index_text(index), points.size()));
+      }
+    }
+    Polygon sorted = polygon;
+    std::sort(sorted.begin(), sorted.end());
+    const auto twice = std::adjacent_find(sorted.begin(), sorted.end());
+    if(twice != sorted.end())
+      throw Input_error(path, locate.face_line(j), "face " + std::to_string(j) + " uses vertex " +
+                                                      std::to_string(*twice) + " twice");
+    for(std::size_t index : polygon)
+      used[index] = true;
+  }
+  if(!PMP::is_polygon_soup_a_polygon_mesh(polygons)) {
+    std::size_t face = 0;
+    const std::string detail = internal::describe_non_manifold(polygons, points.size(), face);
+    throw Input_error(path, face == std::size_t(-1) ? 0 : locate.face_line(face),
+                      "non-manifold edge or vertex, or inconsistent orientation" +
+                          (detail.empty() ? std::string() : " (" + detail + ")"));
+  }
+
+  // The mesh. An empty mesh without garbage appends vertices and faces in
+  // soup order, which is what makes vertex i the file's point i.
+  CGAL::clear(mesh);
+  PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
+  const std::vector<vertex_descriptor> vertex_of(vertices(mesh).begin(), vertices(mesh).end());
+  const std::vector<face_descriptor> face_of(faces(mesh).begin(), faces(mesh).end());
+
+  Mesh_read_report report;
+  report.vertices = points.size();
+  report.faces_in_file = polygons.size();
+  report.isolated_vertices = static_cast<std::size_t>(std::count(used.begin(), used.end(), false));
+
+  for(std::size_t j = 0; j < polygons.size(); ++j) {
+    if(polygons[j].size() == 3)
+      continue;
+    const face_descriptor f = face_of[j];
+    if(!PMP::triangulate_face(f, mesh)) {
+      // triangulate_face() gives up on a polygon without a normal (collinear
+      // or coinciding corners) before changing anything: cut a fan instead.
+      const halfedge_descriptor h = halfedge(f, mesh);
+      while(next(next(next(h, mesh), mesh), mesh) != h)
+        CGAL::Euler::split_face(h, next(next(h, mesh), mesh), mesh);
+    }
+    ++report.polygons_triangulated;
+
+    // Euler::split_face() does not look for an existing edge: a diagonal that
+    // is already an edge of the mesh becomes a second, parallel edge.
+    for(std::size_t a : polygons[j]) {
+      std::vector<vertex_descriptor> neighbours;
+      for(halfedge_descriptor h : CGAL::halfedges_around_target(halfedge(vertex_of[a], mesh), mesh))
+        neighbours.push_back(source(h, mesh));
+      std::sort(neighbours.begin(), neighbours.end());
+      const auto twice = std::adjacent_find(neighbours.begin(), neighbours.end());
+      if(twice != neighbours.end()) {
+        const std::size_t b = static_cast<std::size_t>(
+          std::find(vertex_of.begin(), vertex_of.end(), *twice) - vertex_of.begin());
+        throw Input_error(path, locate.face_line(j),
+                          "face " + std::to_string(j) + " cannot be triangulated without a second edge between vertices " +
+                              std::to_string(std::min(a, b)) + " and " + std::to_string(std::max(a, b)));
+      }
+    }
+  }
+
+  // The soup check above makes this impossible; it stays as a cheap guard
+  // because polygon_soup_to_polygon_mesh()'s own check is a precondition
+  // that release builds drop.
+  std::vector<halfedge_descriptor> non_manifold;
+  PMP::non_manifold_vertices(mesh, std::back_inserter(non_manifold));
+  if(!non_manifold.empty()) {
+    const vertex_descriptor v = target(non_manifold.front(), mesh);
+    const std::size_t i = static_cast<std::size_t>(std::find(vertex_of.begin(), vertex_of.end(), v) - vertex_of.begin());
+    throw Input_error(path, 0, "vertex " + std::to_string(i) + " is non-manifold");
+  }
+
+  report.faces = static_cast<std::size_t>(num_faces(mesh));
+  for(face_descriptor f : faces(mesh))
+    if(PMP::is_degenerate_triangle_face(f, mesh))
+      ++report.degenerate_faces;
+  return report;
+}
+
+} // namespace diffuv
+
+#endif // DIFFUV_IO_READ_MESH_H

@@ -1,0 +1,150 @@
+// diffuv: a textured mesh as a Wavefront OBJ file.
+//
+// CGAL's OBJ writer ignores texture coordinates, and a parameterization
+// with seams needs them per face corner: a vertex on a seam has one (u,v) in
+// each chart. This writer emits one `vt` per distinct (vertex, uv) pair and
+// `f v/vt ...` faces, keeping the vertices in the order of the mesh so that
+// vertex i of the OBJ file is vertex i of the input mesh.
+#ifndef DIFFUV_IO_WRITE_OBJ_H
+#define DIFFUV_IO_WRITE_OBJ_H
+
+#include <diffuv/error.h>
+#include <diffuv/io/atomic_file.h>
+
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/number_utils.h>
+
+#include <boost/graph/graph_traits.hpp>
+#include <boost/property_map/property_map.hpp>
+
+#include <cstddef>
+#include <iomanip>
+#include <ostream>
+#include <string>
+#include <type_traits>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+namespace diffuv {
+
+/// Writes `tm` with per-corner texture coordinates as an OBJ file.
+///
+/// The file holds, in this order: `mtllib` (if `mtllib` is not empty), one
+/// `v` line per vertex in the order of `vertices(tm)` (17 significant digits),
+/// one `vt` line per distinct (vertex, uv) pair in the order the faces first
+/// use it (9 significant digits), `usemtl` (if `material` is not empty), and
+/// one `f v/vt v/vt v/vt` line per face in the order of `faces(tm)`, with
+/// 1-based indices. The corners of a face are the targets of the halfedges
+/// of `halfedges_around_face(halfedge(f, tm), tm)`, so the orientation of
+/// the mesh is kept. Two uv of one vertex are the same `vt` only if they are
+/// exactly equal.
+///
+/// The file is written through `Atomic_output_file`: on error, an existing
+/// file at `path` is left as it was.
+///
+/// \tparam TriangleMesh a model of `FaceListGraph` and `VertexListGraph`
+///         (faces with more than three corners are written as they are)
+/// \tparam VertexPointMap a `ReadablePropertyMap` from `vertex_descriptor`
+///         to a 3D point with `x()`, `y()`, `z()`
+/// \tparam CornerUvMap a `ReadablePropertyMap` from `halfedge_descriptor`
+///         to a 2D point with `x()`, `y()`: the uv of the corner `target(h)` in `face(h)`
+/// \param path the OBJ file to write; its folder must exist
+/// \param tm the mesh
+/// \param vpm the positions of the vertices of `tm`
+/// \param corner_uv the uv of every corner of every face of `tm`
+/// \param mtllib the material library to reference, e.g. "parameterization.mtl"
+/// \param material the material used by the faces, e.g. "checkerboard"
+/// \throws Output_error naming `path` if the file cannot be created or written
+template <class TriangleMesh, class VertexPointMap, class CornerUvMap>
+void write_obj(const std::string& path,
+               const TriangleMesh& tm,
+               VertexPointMap vpm,
+               CornerUvMap corner_uv,
+               const std::string& mtllib = "",
+               const std::string& material = "")
+{
+  using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
+  using halfedge_descriptor = typename boost::graph_traits<TriangleMesh>::halfedge_descriptor;
+  using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
+  static_assert(std::is_convertible<vertex_descriptor, typename boost::property_traits<VertexPointMap>::key_type>::value,
+                "write_obj: VertexPointMap must be keyed by the vertex_descriptor of TriangleMesh");
+  static_assert(std::is_convertible<halfedge_descriptor, typename boost::property_traits<CornerUvMap>::key_type>::value,
+                "write_obj: CornerUvMap must be keyed by the halfedge_descriptor of TriangleMesh");
+
+  // Position of each vertex in vertices(tm): the internal index of a
+  // Surface_mesh has gaps after removals, the OBJ numbering must not.
+  std::unordered_map<vertex_descriptor, std::size_t> vertex_number;
+  vertex_number.reserve(num_vertices(tm));
+  for(vertex_descriptor v : vertices(tm))
+    vertex_number.emplace(v, vertex_number.size());
+
+  // The vt of each vertex so far; a vertex has one per chart it is in,
+  // so a linear search is short.
+  struct Uv { double u, v; std::size_t number; };
+  std::vector<std::vector<Uv>> uvs_of_vertex(vertex_number.size());
+  std::vector<std::pair<double, double>> vt;   // in file order
+  std::vector<std::size_t> corners;            // (v, vt) pairs, face after face
+  std::vector<std::size_t> face_sizes;
+
+  for(face_descriptor f : faces(tm)) {
+    std::size_t size = 0;
+    for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, tm), tm)) {
+      const std::size_t vn = vertex_number.at(target(h, tm));
+      const auto uv = get(corner_uv, h);
+      const double u = CGAL::to_double(uv.x());
+      const double v = CGAL::to_double(uv.y());
+      std::size_t tn = vt.size();
+      bool found = false;
+      for(const Uv& known : uvs_of_vertex[vn]) {
+        if(known.u == u && known.v == v) {
+          tn = known.number;
+          found = true;
+          break;
+        }
+      }
+      if(!found) {
+        uvs_of_vertex[vn].push_back(Uv{u, v, tn});
+        vt.emplace_back(u, v);
+      }
+      corners.push_back(vn);
+      corners.push_back(tn);
+      ++size;
+    }
+    face_sizes.push_back(size);
+  }
+
+  Atomic_output_file file(path);
+  std::ostream& out = file.stream();
+  if(!mtllib.empty())
+    out << "mtllib " << mtllib << '\n';
+
+  out << std::setprecision(17);
+  for(vertex_descriptor v : vertices(tm)) {
+    const auto& p = get(vpm, v);
+    out << "v " << CGAL::to_double(p.x()) << ' ' << CGAL::to_double(p.y()) << ' '
+        << CGAL::to_double(p.z()) << '\n';
+  }
+
+  // 9 significant digits round-trip a float, more than any texture needs.
+  out << std::setprecision(9);
+  for(const auto& [u, v] : vt)
+    out << "vt " << u << ' ' << v << '\n';
+
+  if(!material.empty())
+    out << "usemtl " << material << '\n';
+
+  std::size_t c = 0;
+  for(std::size_t size : face_sizes) {
+    out << 'f';
+    for(std::size_t k = 0; k < size; ++k, c += 2)
+      out << ' ' << corners[c] + 1 << '/' << corners[c + 1] + 1;
+    out << '\n';
+  }
+
+  file.commit();
+}
+
+} // namespace diffuv
+
+#endif // DIFFUV_IO_WRITE_OBJ_H

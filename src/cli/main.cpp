@@ -1,0 +1,38 @@
+// diffuv tool: entry point. Parses the command line, runs one subcommand and
+// turns every error into one line on stderr and an exit code.
+#include "commands.h"
+
+#include <diffuv/error.h>
+
+#include <exception>
+#include <iostream>
+
+int main(int argc, char** argv)
+{
+  CLI::App app{"diffuv: diffusion-based surface parameterization (CGAL)\n"
+               "Each vertex of a disc patch gets u = d_u1/(d_u1+d_u2), v = d_v1/(d_v1+d_v2) from its\n"
+               "graph distances to the four sides of the patch."};
+  app.require_subcommand(1);
+  diffuv_cli::add_param_command(app);
+
+  try {
+    app.parse(argc, argv);
+  } catch(const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch(const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch(const CLI::ParseError& e) {
+    std::cerr << "diffuv: " << e.what() << "\n(run 'diffuv --help' or 'diffuv param --help')\n";
+    return diffuv_cli::exit_usage;
+  } catch(const diffuv::Input_error& e) {
+    std::cerr << "diffuv: error: " << e.what() << '\n';
+    return diffuv_cli::exit_bad_input;
+  } catch(const diffuv::Output_error& e) {
+    std::cerr << "diffuv: error: cannot write " << e.what() << '\n';
+    return diffuv_cli::exit_output;
+  } catch(const std::exception& e) {
+    std::cerr << "diffuv: internal error: " << e.what() << '\n';
+    return diffuv_cli::exit_internal;
+  }
+  return diffuv_cli::exit_ok;
+}

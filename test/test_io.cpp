@@ -1,0 +1,895 @@
+// Tests of include/diffuv/io: the mesh reader (vertex order, every
+// rejection with its exact message and line), selection files, the OBJ
+// writer (round trip, seams) and atomic output files.
+//
+// Expectations come from the files themselves, parsed here by hand, not
+// from CGAL's readers.
+#include "test_data.h"
+
+#include <diffuv/io/atomic_file.h>
+#include <diffuv/io/read_mesh.h>
+#include <diffuv/io/selection_file.h>
+#include <diffuv/io/write_obj.h>
+
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+using diffuv_test::Mesh;
+using diffuv_test::Point_2;
+using diffuv_test::Point_3;
+using vertex_descriptor = boost::graph_traits<Mesh>::vertex_descriptor;
+using halfedge_descriptor = boost::graph_traits<Mesh>::halfedge_descriptor;
+using face_descriptor = boost::graph_traits<Mesh>::face_descriptor;
+
+// A fresh folder per test, removed afterwards.
+class IoTest : public ::testing::Test {
+protected:
+  void SetUp() override
+  {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    dir_ = fs::temp_directory_path() /
+           ("diffuv_test_io_" + std::to_string(::getpid()) + "_" + info->test_suite_name() + "_" + info->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+
+  std::string write(const std::string& name, const std::string& content) const
+  {
+    std::ofstream out(path(name), std::ios::binary);
+    out << content;
+    return path(name);
+  }
+
+  fs::path dir_;
+};
+
+using IoReadMesh = IoTest;
+using IoSelection = IoTest;
+using IoWriteObj = IoTest;
+using IoAtomicFile = IoTest;
+
+// Reads `file` and returns the Input_error it must throw.
+diffuv::Input_error read_error(const std::string& file)
+{
+  Mesh mesh;
+  try {
+    diffuv::read_triangle_mesh(file, mesh);
+  } catch(const diffuv::Input_error& e) {
+    return e;
+  }
+  ADD_FAILURE() << file << " was read without error";
+  return diffuv::Input_error(file, 0, "no error");
+}
+
+// ---------------------------------------------------------------------------
+// Hand-written parsers of the real files: the expected points and faces.
+
+struct File_soup {
+  std::vector<std::array<double, 3>> points;
+  std::vector<std::vector<std::size_t>> faces;
+};
+
+// OFF as CGAL's data files write it: "OFF", three counts, one vertex
+// (three numbers) per line, then "k i1 ... ik" per face.
+File_soup parse_off(const std::string& file)
+{
+  std::ifstream in(file);
+  std::string keyword;
+  std::size_t nv = 0, nf = 0, ne = 0;
+  in >> keyword >> nv >> nf >> ne;
+  EXPECT_EQ(keyword, "OFF");
+  File_soup soup;
+  for(std::size_t i = 0; i < nv; ++i) {
+    std::array<double, 3> p;
+    in >> p[0] >> p[1] >> p[2];
+    soup.points.push_back(p);
+  }
+  for(std::size_t j = 0; j < nf; ++j) {
+    std::size_t k = 0;
+    in >> k;
+    std::vector<std::size_t> f(k);
+    for(std::size_t& i : f)
+      in >> i;
+    soup.faces.push_back(f);
+  }
+  EXPECT_TRUE(in) << file;
+  return soup;
+}
+
+// ASCII PLY whose first element is "vertex" starting with x y z, and whose
+// second is "face" starting with the index list.
+File_soup parse_ascii_ply(const std::string& file)
+{
+  std::ifstream in(file);
+  std::string line;
+  std::vector<std::size_t> counts;
+  while(std::getline(in, line) && line != "end_header") {
+    std::istringstream words(line);
+    std::string w, name;
+    std::size_t n = 0;
+    if(words >> w && w == "element" && words >> name >> n)
+      counts.push_back(n);
+  }
+  File_soup soup;
+  for(std::size_t i = 0; i < counts.at(0); ++i) {
+    std::getline(in, line);
+    std::istringstream words(line);
+    std::array<double, 3> p;
+    words >> p[0] >> p[1] >> p[2];
+    soup.points.push_back(p);
+  }
+  for(std::size_t j = 0; j < counts.at(1); ++j) {
+    std::getline(in, line);
+    std::istringstream words(line);
+    std::size_t k = 0;
+    words >> k;
+    std::vector<std::size_t> f(k);
+    for(std::size_t& i : f)
+      words >> i;
+    soup.faces.push_back(f);
+  }
+  return soup;
+}
+
+// Binary STL; points numbered by first appearance, identical ones merged.
+File_soup parse_binary_stl(const std::string& file)
+{
+  std::ifstream in(file, std::ios::binary);
+  char header[80];
+  in.read(header, 80);
+  std::uint32_t n = 0;
+  in.read(reinterpret_cast<char*>(&n), 4);
+  File_soup soup;
+  std::map<std::array<float, 3>, std::size_t> number;
+  for(std::uint32_t t = 0; t < n; ++t) {
+    float data[12];
+    in.read(reinterpret_cast<char*>(data), sizeof data);
+    char attribute[2];
+    in.read(attribute, 2);
+    std::vector<std::size_t> f;
+    for(int c = 0; c < 3; ++c) {
+      const std::array<float, 3> p{data[3 + 3 * c], data[4 + 3 * c], data[5 + 3 * c]};
+      const auto it = number.emplace(p, soup.points.size()).first;
+      if(it->second == soup.points.size())
+        soup.points.push_back({double(p[0]), double(p[1]), double(p[2])});
+      f.push_back(it->second);
+    }
+    soup.faces.push_back(f);
+  }
+  EXPECT_TRUE(in) << file;
+  return soup;
+}
+
+// The vertex numbers of face f, starting at the corner of halfedge(f).
+std::vector<std::size_t> face_vertex_numbers(const Mesh& mesh, face_descriptor f)
+{
+  std::vector<std::size_t> numbers;
+  for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, mesh), mesh))
+    numbers.push_back(std::size_t(target(h, mesh)));
+  return numbers;
+}
+
+bool same_cycle(std::vector<std::size_t> a, const std::vector<std::size_t>& b)
+{
+  for(std::size_t r = 0; r < a.size(); ++r) {
+    if(a == b)
+      return true;
+    std::rotate(a.begin(), a.begin() + 1, a.end());
+  }
+  return false;
+}
+
+// Checks that the mesh read from `file` has the file's points in the file's
+// order and the file's faces in the file's order.
+void expect_same_as_file(const std::string& file, const File_soup& soup)
+{
+  Mesh mesh;
+  const diffuv::Mesh_read_report report = diffuv::read_triangle_mesh(file, mesh);
+  EXPECT_EQ(report.vertices, soup.points.size()) << file;
+  EXPECT_EQ(report.faces_in_file, soup.faces.size()) << file;
+  EXPECT_EQ(report.polygons_triangulated, 0u) << file;
+  EXPECT_EQ(report.faces, soup.faces.size()) << file;
+  EXPECT_EQ(num_vertices(mesh), soup.points.size()) << file;
+  EXPECT_EQ(num_faces(mesh), soup.faces.size()) << file;
+
+  std::size_t i = 0, wrong_points = 0;
+  for(vertex_descriptor v : vertices(mesh)) {
+    const Point_3& p = mesh.point(v);
+    const auto& q = soup.points[i++];
+    if(p.x() != q[0] || p.y() != q[1] || p.z() != q[2])
+      ++wrong_points;
+  }
+  EXPECT_EQ(wrong_points, 0u) << file;
+
+  std::size_t j = 0, wrong_faces = 0;
+  for(face_descriptor f : faces(mesh))
+    if(!same_cycle(face_vertex_numbers(mesh, f), soup.faces[j++]))
+      ++wrong_faces;
+  EXPECT_EQ(wrong_faces, 0u) << file;
+}
+
+// ---------------------------------------------------------------------------
+// Reading real meshes
+
+TEST(IoReadMeshReal, OffKeepsTheFileOrder)
+{
+  for(const char* name : {"cow.off", "nefertiti.off"}) {
+    const std::string file = diffuv_test::data_path(std::string("meshes/") + name);
+    const File_soup soup = parse_off(file);
+    expect_same_as_file(file, soup);
+  }
+  // The counts of the headers, written in the files.
+  EXPECT_EQ(parse_off(diffuv_test::data_path("meshes/cow.off")).points.size(), 2904u);
+  EXPECT_EQ(parse_off(diffuv_test::data_path("meshes/cow.off")).faces.size(), 5804u);
+  EXPECT_EQ(parse_off(diffuv_test::data_path("meshes/nefertiti.off")).points.size(), 299u);
+  EXPECT_EQ(parse_off(diffuv_test::data_path("meshes/nefertiti.off")).faces.size(), 562u);
+}
+
+TEST(IoReadMeshReal, PlyKeepsTheFileOrder)
+{
+  const std::string file = diffuv_test::data_path("meshes/colored_tetra.ply");
+  const File_soup soup = parse_ascii_ply(file);
+  ASSERT_EQ(soup.points.size(), 4u);
+  ASSERT_EQ(soup.faces.size(), 4u);
+  expect_same_as_file(file, soup);
+}
+
+TEST(IoReadMeshReal, BinaryStlNumbersPointsByFirstAppearance)
+{
+  const std::string file = diffuv_test::data_path("meshes/sphere.stl");
+  const File_soup soup = parse_binary_stl(file);
+  ASSERT_EQ(soup.faces.size(), 320u);
+  ASSERT_EQ(soup.points.size(), 162u);
+  expect_same_as_file(file, soup);
+}
+
+// pig.stl touches itself at single points: CGAL's read_polygon_mesh would
+// silently duplicate those vertices (changing the numbering); we refuse.
+TEST(IoReadMeshReal, PigStlHasNonManifoldVertices)
+{
+  const std::string file = diffuv_test::data_path("meshes/pig.stl");
+  const diffuv::Input_error e = read_error(file);
+  EXPECT_EQ(e.line(), 0u);
+  EXPECT_EQ(e.reason(), "non-manifold edge or vertex, or inconsistent orientation "
+                        "(the faces around vertex 90 form 2 separate fans)");
+  EXPECT_EQ(std::string(e.what()), file + ": " + e.reason());
+}
+
+// ---------------------------------------------------------------------------
+// Files, names and formats
+
+const std::string triangle_off = "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+
+TEST_F(IoReadMesh, ExtensionIsCaseInsensitive)
+{
+  Mesh mesh;
+  const diffuv::Mesh_read_report report = diffuv::read_triangle_mesh(write("t.OfF", triangle_off), mesh);
+  EXPECT_EQ(report.vertices, 3u);
+  EXPECT_EQ(num_faces(mesh), 1u);
+}
+
+TEST_F(IoReadMesh, UnknownOrMissingExtension)
+{
+  const std::string xyz = write("t.xyz", triangle_off);
+  diffuv::Input_error e = read_error(xyz);
+  EXPECT_EQ(std::string(e.what()), xyz + ": unknown mesh file extension \".xyz\" (expected .off, .obj, .ply or .stl)");
+  EXPECT_EQ(e.line(), 0u);
+  EXPECT_EQ(e.file(), xyz);
+
+  const std::string none = write("t", triangle_off);
+  e = read_error(none);
+  EXPECT_EQ(e.reason(), "the file name has no extension (expected .off, .obj, .ply or .stl)");
+}
+
+TEST_F(IoReadMesh, MissingDirectoryOrEmptyFile)
+{
+  diffuv::Input_error e = read_error(path("missing.off"));
+  EXPECT_EQ(std::string(e.what()), path("missing.off") + ": cannot open file");
+  EXPECT_EQ(e.line(), 0u);
+
+  fs::create_directory(path("folder.off"));
+  EXPECT_EQ(read_error(path("folder.off")).reason(), "cannot open file");
+
+  e = read_error(write("empty.obj", ""));
+  EXPECT_EQ(e.reason(), "the file is empty");
+  EXPECT_EQ(e.line(), 0u);
+}
+
+TEST_F(IoReadMesh, ReadingReplacesTheMeshContent)
+{
+  Mesh mesh;
+  diffuv::read_triangle_mesh(diffuv_test::data_path("meshes/nefertiti.off"), mesh);
+  const diffuv::Mesh_read_report report = diffuv::read_triangle_mesh(write("t.off", triangle_off), mesh);
+  EXPECT_EQ(report.vertices, 3u);
+  EXPECT_EQ(num_vertices(mesh), 3u);
+  EXPECT_EQ(num_faces(mesh), 1u);
+  EXPECT_EQ(mesh.point(*std::next(vertices(mesh).begin())), Point_3(1, 0, 0));
+}
+
+// ---------------------------------------------------------------------------
+// OFF syntax: CGAL says "false"; the message says where and why.
+
+TEST_F(IoReadMesh, OffSyntaxErrorsHaveALine)
+{
+  struct Case { const char* content; std::size_t line; const char* reason; };
+  const Case cases[] = {
+    {"OOF\n3 1 0\n", 1, "not a valid OFF file (the file does not start with an OFF header)"},
+    {"# only a comment\n\n", 0, "not a valid OFF file (the file has no OFF header)"},
+    {"OFF\n3 x 0\n", 2, "not a valid OFF file (cannot read the numbers of vertices, faces and edges)"},
+    {"OFF\n-1 1 0\n0 0 0\n", 2, "not a valid OFF file (negative number of vertices or faces)"},
+    {"OFF\n200000000 1 0\n0 0 0\n3 0 0 0\n", 2,
+     "not a valid OFF file (the header announces 200000000 vertices and 1 faces, "
+     "more than the 32 bytes of the file can hold)"},
+    {"# a comment\nOFF\n# another\n3 1 0\n0 0 0\n\n1 0\n0 1 0\n3 0 1 2\n", 7,
+     "not a valid OFF file (vertex 1 does not have 3 coordinates)"},
+    {"OFF 3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1\n", 5,
+     "not a valid OFF file (face 0 lists fewer than its 3 vertex indices)"},
+    {"OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\nx 0 1 2\n", 6,
+     "not a valid OFF file (face 0 does not start with its number of vertices)"},
+    {"OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", 0, "not a valid OFF file (the file ends before face 1 of 2)"},
+    {"OFF\n4 1 0\n0 0 0\n1 0 0\n0 1 0\n", 0, "not a valid OFF file (the file ends before vertex 3 of 4)"},
+    {"OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n", 6, "face 0 has vertex index 3, out of range (the file has 3 vertices)"},
+    {"OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 -1 2\n", 6, "face 0 has vertex index -1, out of range (the file has 3 vertices)"},
+    {"OFF\n3 1 0\n0 0 0\n1 0 0\nnan 1 0\n3 0 1 2\n", 5, "vertex 2 has a coordinate that is NaN or infinite"},
+    {"OFF\n3 1 0\n0 0 0\n1 0 1e999\n0 1 0\n3 0 1 2\n", 4, "vertex 1 has a coordinate that is NaN or infinite"},
+  };
+  int k = 0;
+  for(const Case& c : cases) {
+    const std::string file = write("case" + std::to_string(k++) + ".off", c.content);
+    const diffuv::Input_error e = read_error(file);
+    EXPECT_EQ(e.reason(), c.reason) << c.content;
+    EXPECT_EQ(e.line(), c.line) << c.content;
+    EXPECT_EQ(e.file(), file);
+    const std::string where = c.line > 0 ? ":" + std::to_string(c.line) : std::string();
+    EXPECT_EQ(std::string(e.what()), file + where + ": " + c.reason);
+  }
+}
+
+TEST_F(IoReadMesh, OffWithoutFace)
+{
+  const diffuv::Input_error e = read_error(write("noface.off", "OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n"));
+  EXPECT_EQ(e.reason(), "the file has no face");
+  EXPECT_EQ(e.line(), 0u);
+}
+
+// ---------------------------------------------------------------------------
+// OBJ
+
+TEST_F(IoReadMesh, ObjErrorsHaveALine)
+{
+  struct Case { const char* content; std::size_t line; const char* reason; };
+  const Case cases[] = {
+    // One past the last vertex: CGAL's reader accepts it (then its mesh
+    // builder asserts); we must not.
+    {"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n", 4, "face 0 has vertex index 4, out of range (the file has 3 vertices)"},
+    {"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 3 2 9\n", 5, "face 1 has vertex index 9, out of range (the file has 3 vertices)"},
+    {"v 0 0 0\nv 1 0 0\nf 1 2 -3\nv 0 1 0\n", 3, "face 0 has vertex index -3, out of range (the file has 3 vertices)"},
+    {"v 0 0 0\nv 1 0 0\nv 0 1 0\nxyz 1\nf 1 2 3\n", 4, "not a valid OBJ file (unknown keyword \"xyz\")"},
+    {"v 0 0 0\nv 1 0\nv 0 1 0\nf 1 2 3\n", 2, "not a valid OBJ file (cannot read the coordinates of vertex 1)"},
+    {"# comment\nv 0 0 0\nv 1 0 0\nv 0 inf 0\nf 1 2 3\n", 4, "vertex 2 has a coordinate that is NaN or infinite"},
+    {"v 0 0 0\nv 1 0 0\nv 0 1 0\n", 0, "the file has no face"},
+    {"v 0 0 0\nv 1 0 0\nv 0 1 0\n\nf 1 2\n", 5, "face 0 has only 2 vertices"},
+    {"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 3/1/1 2/2/2 2/3/3\n", 5, "face 1 uses vertex 1 twice"},
+  };
+  int k = 0;
+  for(const Case& c : cases) {
+    const std::string file = write("case" + std::to_string(k++) + ".obj", c.content);
+    const diffuv::Input_error e = read_error(file);
+    EXPECT_EQ(e.reason(), c.reason) << c.content;
+    EXPECT_EQ(e.line(), c.line) << c.content;
+  }
+}
+
+TEST_F(IoReadMesh, ObjWithTexturesAndNegativeIndices)
+{
+  Mesh mesh;
+  const diffuv::Mesh_read_report report = diffuv::read_triangle_mesh(
+    write("t.obj", "mtllib a.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nf 1/1 2/2 3/3\nv 1 1 0\nf -3/2 -1 -2\n"),
+    mesh);
+  EXPECT_EQ(report.vertices, 4u);
+  EXPECT_EQ(report.faces, 2u);
+  const face_descriptor second = *std::next(faces(mesh).begin());
+  EXPECT_TRUE(same_cycle(face_vertex_numbers(mesh, second), {1, 3, 2}));
+}
+
+// ---------------------------------------------------------------------------
+// PLY and STL (binary: no line numbers)
+
+std::string binary_ply_triangle(float bad_x)
+{
+  std::string s = "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\n"
+                  "property float y\nproperty float z\nelement face 1\n"
+                  "property list uchar int vertex_indices\nend_header\n";
+  const float xyz[9] = {0, 0, 0, bad_x, 0, 0, 0, 1, 0};
+  s.append(reinterpret_cast<const char*>(xyz), sizeof xyz);
+  const unsigned char three = 3;
+  s.append(reinterpret_cast<const char*>(&three), 1);
+  const std::int32_t indices[3] = {0, 1, 2};
+  s.append(reinterpret_cast<const char*>(indices), sizeof indices);
+  return s;
+}
+
+TEST_F(IoReadMesh, PlyNonFiniteCoordinates)
+{
+  Mesh mesh;
+  EXPECT_EQ(diffuv::read_triangle_mesh(write("ok.ply", binary_ply_triangle(1.f)), mesh).vertices, 3u);
+
+  for(float bad : {std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::infinity(),
+                   -std::numeric_limits<float>::infinity()}) {
+    const diffuv::Input_error e = read_error(write("bad.ply", binary_ply_triangle(bad)));
+    EXPECT_EQ(e.reason(), "vertex 1 has a coordinate that is NaN or infinite") << bad;
+    EXPECT_EQ(e.line(), 0u);
+  }
+}
+
+TEST_F(IoReadMesh, PlyIndexErrors)
+{
+  const std::string header = "ply\nformat ascii 1.0\nelement vertex 3\nproperty double x\nproperty double y\n"
+                             "property double z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
+                             "0 0 0\n1 0 0\n0 1 0\n";
+  EXPECT_EQ(read_error(write("a.ply", header + "3 0 1 5\n")).reason(),
+            "face 0 has vertex index 5, out of range (the file has 3 vertices)");
+  EXPECT_EQ(read_error(write("b.ply", header + "3 0 -1 2\n")).reason(),
+            "face 0 has vertex index -1, out of range (the file has 3 vertices)");
+  EXPECT_EQ(read_error(write("c.ply", header + "3 0 1\n")).reason(), "not a valid PLY file");
+  EXPECT_EQ(read_error(write("d.ply", "ply\nformat ascii 1.0\nelement vertex 3\nend_head\n")).reason(),
+            "not a valid PLY file");
+}
+
+TEST_F(IoReadMesh, StlWithoutFace)
+{
+  // Not "solid ...": binary. (A header of spaces would be skipped by CGAL's
+  // reader as leading white space.)
+  std::string s(80, 'x');
+  s.append(4, '\0'); // zero triangles
+  EXPECT_EQ(read_error(write("empty.stl", s)).reason(), "the file has no face");
+  EXPECT_EQ(read_error(write("truncated.stl", s.substr(0, 80) + std::string("\x05\0\0\0", 4))).reason(),
+            "not a valid STL file");
+}
+
+// ---------------------------------------------------------------------------
+// Topology
+
+TEST_F(IoReadMesh, FaceWithFewerThanThreeOrRepeatedVertices)
+{
+  diffuv::Input_error e = read_error(write("a.off", "OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n2 0 1\n"));
+  EXPECT_EQ(e.reason(), "face 1 has only 2 vertices");
+  EXPECT_EQ(e.line(), 7u);
+  e = read_error(write("b.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n3 0 1 2\n4 1 3 2 3\n"));
+  EXPECT_EQ(e.reason(), "face 1 uses vertex 3 twice");
+  EXPECT_EQ(e.line(), 8u);
+}
+
+TEST_F(IoReadMesh, NonManifoldOrInconsistentSoups)
+{
+  const std::string points = "0 0 0\n1 0 0\n0 1 0\n0 -1 0\n0 0 1\n";
+  // Three faces on the edge 0-1.
+  diffuv::Input_error e = read_error(write("edge.off", "OFF\n5 3 0\n" + points + "3 0 1 2\n3 1 0 3\n3 0 1 4\n"));
+  EXPECT_EQ(e.reason(), "non-manifold edge or vertex, or inconsistent orientation "
+                        "(faces 0 and 2 both go from vertex 0 to vertex 1)");
+  EXPECT_EQ(e.line(), 10u);
+  // Two faces that disagree on the orientation of their common edge.
+  e = read_error(write("orientation.off", "OFF\n5 2 0\n" + points + "3 0 1 2\n3 0 1 3\n"));
+  EXPECT_EQ(e.reason(), "non-manifold edge or vertex, or inconsistent orientation "
+                        "(faces 0 and 1 both go from vertex 0 to vertex 1)");
+  EXPECT_EQ(e.line(), 9u);
+  // Two triangles touching at vertex 0 only (a bow tie).
+  e = read_error(write("bowtie.off", "OFF\n5 2 0\n" + points + "3 0 1 2\n3 0 3 4\n"));
+  EXPECT_EQ(e.reason(), "non-manifold edge or vertex, or inconsistent orientation "
+                        "(the faces around vertex 0 form 2 separate fans)");
+  EXPECT_EQ(e.line(), 0u);
+}
+
+TEST_F(IoReadMesh, PolygonsAreTriangulated)
+{
+  // Two quads side by side, and a pentagon above them.
+  const std::string content = "OFF\n8 3 0\n"
+                              "0 0 0\n1 0 0\n2 0 0\n0 1 0\n1 1 0\n2 1 0\n0 2 0\n2 2 0.1\n"
+                              "4 0 1 4 3\n4 1 2 5 4\n5 3 4 5 7 6\n";
+  Mesh mesh;
+  const diffuv::Mesh_read_report report = diffuv::read_triangle_mesh(write("quads.off", content), mesh);
+  EXPECT_EQ(report.faces_in_file, 3u);
+  EXPECT_EQ(report.polygons_triangulated, 3u);
+  EXPECT_EQ(report.faces, 2u + 2u + 3u);
+  EXPECT_EQ(num_faces(mesh), 7u);
+  EXPECT_EQ(report.degenerate_faces, 0u);
+  EXPECT_EQ(report.isolated_vertices, 0u);
+  std::size_t triangles = 0;
+  for(face_descriptor f : faces(mesh))
+    if(face_vertex_numbers(mesh, f).size() == 3)
+      ++triangles;
+  EXPECT_EQ(triangles, 7u);
+  EXPECT_EQ(num_vertices(mesh), 8u);
+  EXPECT_EQ(mesh.point(vertex_descriptor(7)), Point_3(2, 2, 0.1));
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
+}
+
+TEST_F(IoReadMesh, DegeneratePolygonsAreKeptAndCounted)
+{
+  // A quad on a line (CGAL's triangulation refuses it: cut as a fan) and a
+  // flat triangle, beside a good triangle.
+  const std::string content = "OFF\n8 3 0\n0 0 0\n1 0 0\n2 0 0\n3 0 0\n0 5 0\n1 5 0\n2 5 0\n0 6 0\n"
+                              "4 0 1 2 3\n3 4 5 6\n3 4 6 7\n";
+  Mesh mesh;
+  const diffuv::Mesh_read_report report = diffuv::read_triangle_mesh(write("flat.off", content), mesh);
+  EXPECT_EQ(report.polygons_triangulated, 1u);
+  EXPECT_EQ(report.faces, 4u);
+  EXPECT_EQ(report.degenerate_faces, 3u);
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
+}
+
+TEST_F(IoReadMesh, IsolatedPointsKeepTheirIndex)
+{
+  Mesh mesh;
+  const diffuv::Mesh_read_report report =
+    diffuv::read_triangle_mesh(write("iso.off", "OFF\n4 1 0\n5 5 5\n0 0 0\n1 0 0\n0 1 0\n3 1 2 3\n"), mesh);
+  EXPECT_EQ(report.vertices, 4u);
+  EXPECT_EQ(report.isolated_vertices, 1u);
+  EXPECT_EQ(num_vertices(mesh), 4u);
+  EXPECT_EQ(mesh.point(*vertices(mesh).begin()), Point_3(5, 5, 5));
+  EXPECT_EQ(halfedge(*vertices(mesh).begin(), mesh), Mesh::null_halfedge()); // isolated
+  // A pitfall for the callers: CGAL calls a mesh with an isolated vertex invalid.
+  EXPECT_FALSE(CGAL::is_valid_polygon_mesh(mesh));
+}
+
+// A quad whose only good diagonal (0-2) is already an edge of the mesh.
+TEST_F(IoReadMesh, TriangulationMustNotDuplicateAnEdge)
+{
+  const std::string content = "OFF\n4 3 0\n0 0 0\n2 0 0\n0.5 0.5 0\n0 2 0\n4 0 1 2 3\n3 0 2 1\n3 0 3 2\n";
+  const diffuv::Input_error e = read_error(write("pillow.off", content));
+  EXPECT_EQ(e.reason(), "face 0 cannot be triangulated without a second edge between vertices 0 and 2");
+  EXPECT_EQ(e.line(), 7u);
+}
+
+// ---------------------------------------------------------------------------
+// Selection files
+
+TEST_F(IoSelection, ReadsCgalSquareCorners)
+{
+  const std::string file = diffuv_test::data_path("selections/square_corners.selection.txt");
+  const std::vector<std::size_t> indices = diffuv::read_selection_file(file);
+  EXPECT_EQ(indices, (std::vector<std::size_t>{133, 8, 0, 287}));
+
+  const Mesh& mesh = diffuv_test::cgal_mesh("nefertiti.off");
+  const std::vector<vertex_descriptor> corners = diffuv::selection_vertices(mesh, indices, file);
+  ASSERT_EQ(corners.size(), 4u);
+  for(std::size_t k = 0; k < 4; ++k)
+    EXPECT_EQ(corners[k], *std::next(vertices(mesh).begin(), static_cast<std::ptrdiff_t>(indices[k])));
+}
+
+TEST_F(IoSelection, CgalSelectionWithoutVertices)
+{
+  // lion.selection.txt selects edges only (its first line is empty).
+  const std::string file = diffuv_test::data_path("selections/lion.selection.txt");
+  try {
+    diffuv::read_selection_file(file);
+    ADD_FAILURE() << "no error";
+  } catch(const diffuv::Input_error& e) {
+    EXPECT_EQ(std::string(e.what()), file + ":1: no vertex index on the first line");
+  }
+}
+
+TEST_F(IoSelection, Errors)
+{
+  struct Case { std::string content; std::size_t line; std::string reason; };
+  const Case cases[] = {
+    {"", 1, "no vertex index on the first line"},
+    {"   \n1 2 3\n", 1, "no vertex index on the first line"},
+    {"1 2 x\n", 1, "\"x\" is not a vertex index (a non-negative integer)"},
+    {"4 -3\n", 1, "\"-3\" is not a vertex index (a non-negative integer)"},
+    {"1.5\n", 1, "\"1.5\" is not a vertex index (a non-negative integer)"},
+    {"+2\n", 1, "\"+2\" is not a vertex index (a non-negative integer)"},
+    {"7 99999999999999999999999\n", 1, "vertex index 99999999999999999999999 is too large"},
+  };
+  int k = 0;
+  for(const Case& c : cases) {
+    const std::string file = write("s" + std::to_string(k++) + ".selection.txt", c.content);
+    try {
+      diffuv::read_selection_file(file);
+      ADD_FAILURE() << "no error for " << c.content;
+    } catch(const diffuv::Input_error& e) {
+      EXPECT_EQ(e.reason(), c.reason);
+      EXPECT_EQ(e.line(), c.line);
+      EXPECT_EQ(e.file(), file);
+    }
+  }
+  try {
+    diffuv::read_selection_file(path("missing.selection.txt"));
+    ADD_FAILURE() << "no error";
+  } catch(const diffuv::Input_error& e) {
+    EXPECT_EQ(std::string(e.what()), path("missing.selection.txt") + ": cannot open file");
+  }
+}
+
+TEST_F(IoSelection, TabsCarriageReturnsAndOtherLines)
+{
+  const std::string file = write("ok.selection.txt", "3\t1  2 \r\n5 6\n0 1\n");
+  EXPECT_EQ(diffuv::read_selection_file(file), (std::vector<std::size_t>{3, 1, 2}));
+}
+
+TEST_F(IoSelection, IndexOutOfRange)
+{
+  const Mesh& mesh = diffuv_test::cgal_mesh("nefertiti.off");
+  ASSERT_EQ(num_vertices(mesh), 299u);
+  EXPECT_EQ(diffuv::selection_vertices(mesh, {298}, "s.txt").size(), 1u);
+  try {
+    diffuv::selection_vertices(mesh, {0, 299}, "s.txt");
+    ADD_FAILURE() << "no error";
+  } catch(const diffuv::Input_error& e) {
+    EXPECT_EQ(std::string(e.what()), "s.txt:1: vertex index 299 is out of range (the mesh has 299 vertices)");
+  }
+}
+
+// ---------------------------------------------------------------------------
+// OBJ writer
+
+struct Obj_file {
+  std::vector<std::array<double, 3>> v;
+  std::vector<std::array<double, 2>> vt;
+  std::vector<std::vector<std::array<std::size_t, 2>>> f; // 1-based (v, vt) per corner
+  std::vector<std::string> other;                          // lines of other kinds
+};
+
+Obj_file parse_written_obj(const std::string& file)
+{
+  Obj_file obj;
+  std::ifstream in(file);
+  std::string line;
+  while(std::getline(in, line)) {
+    std::istringstream words(line);
+    std::string kind;
+    words >> kind;
+    if(kind == "v") {
+      std::array<double, 3> p;
+      words >> p[0] >> p[1] >> p[2];
+      obj.v.push_back(p);
+    } else if(kind == "vt") {
+      std::array<double, 2> t;
+      words >> t[0] >> t[1];
+      obj.vt.push_back(t);
+    } else if(kind == "f") {
+      std::vector<std::array<std::size_t, 2>> corners;
+      std::string corner;
+      while(words >> corner) {
+        const std::size_t slash = corner.find('/');
+        corners.push_back({std::stoul(corner.substr(0, slash)), std::stoul(corner.substr(slash + 1))});
+      }
+      obj.f.push_back(corners);
+    } else {
+      obj.other.push_back(line);
+    }
+  }
+  return obj;
+}
+
+TEST_F(IoWriteObj, RoundTripOfARealMesh)
+{
+  const Mesh& mesh = diffuv_test::cgal_mesh("nefertiti.off");
+  // One chart: the uv of a corner is a function of its vertex.
+  auto uv_of = [&](vertex_descriptor v) {
+    const Point_3& p = mesh.point(v);
+    return Point_2(p.x() / 3 + 0.1, p.y() * p.z() + 1e-7);
+  };
+  Mesh copy = mesh;
+  auto corner_uv = copy.add_property_map<halfedge_descriptor, Point_2>("h:uv").first;
+  for(halfedge_descriptor h : halfedges(copy))
+    corner_uv[h] = uv_of(target(h, copy));
+
+  const std::string file = path("nefertiti.obj");
+  diffuv::write_obj(file, copy, copy.points(), corner_uv, "parameterization.mtl", "checker");
+  const Obj_file obj = parse_written_obj(file);
+
+  ASSERT_EQ(obj.v.size(), num_vertices(mesh));
+  EXPECT_EQ(obj.vt.size(), num_vertices(mesh)); // no seam: one vt per vertex
+  ASSERT_EQ(obj.f.size(), num_faces(mesh));
+  EXPECT_EQ(obj.other, (std::vector<std::string>{"mtllib parameterization.mtl", "usemtl checker"}));
+
+  std::size_t i = 0;
+  for(vertex_descriptor v : vertices(mesh)) {
+    const Point_3& p = mesh.point(v);
+    EXPECT_EQ(obj.v[i][0], p.x()); // 17 digits: exact
+    EXPECT_EQ(obj.v[i][1], p.y());
+    EXPECT_EQ(obj.v[i][2], p.z());
+    ++i;
+  }
+  std::size_t j = 0, wrong_vertices = 0, wrong_uv = 0;
+  for(face_descriptor f : faces(mesh)) {
+    const std::vector<std::size_t> expected = face_vertex_numbers(mesh, f);
+    const auto& corners = obj.f[j++];
+    ASSERT_EQ(corners.size(), 3u);
+    for(std::size_t c = 0; c < 3; ++c) {
+      if(corners[c][0] != expected[c] + 1)
+        ++wrong_vertices;
+      const Point_2 uv = uv_of(vertex_descriptor(static_cast<Mesh::size_type>(expected[c])));
+      const auto& t = obj.vt.at(corners[c][1] - 1);
+      if(std::abs(t[0] - uv.x()) > 1e-8 * std::max(1.0, std::abs(uv.x())) ||
+         std::abs(t[1] - uv.y()) > 1e-8 * std::max(1.0, std::abs(uv.y())))
+        ++wrong_uv;
+    }
+  }
+  EXPECT_EQ(wrong_vertices, 0u);
+  EXPECT_EQ(wrong_uv, 0u);
+}
+
+TEST_F(IoWriteObj, SeamVertexGetsTwoTextureCoordinates)
+{
+  // Two triangles 0-1-2 and 0-2-3 cut along their common edge 0-2 in uv.
+  Mesh mesh;
+  const vertex_descriptor a = mesh.add_vertex(Point_3(0, 0, 0)), b = mesh.add_vertex(Point_3(1, 0, 0)),
+                          c = mesh.add_vertex(Point_3(1, 1, 0)), d = mesh.add_vertex(Point_3(0, 1, 0));
+  const face_descriptor f1 = mesh.add_face(a, b, c), f2 = mesh.add_face(a, c, d);
+  auto corner_uv = mesh.add_property_map<halfedge_descriptor, Point_2>("h:uv").first;
+  for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f1, mesh), mesh)) {
+    const Point_3& p = mesh.point(target(h, mesh));
+    corner_uv[h] = Point_2(p.x(), p.y());
+  }
+  // In the second face, a moves in u only and c in v only: both must count.
+  for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f2, mesh), mesh)) {
+    const vertex_descriptor v = target(h, mesh);
+    const Point_3& p = mesh.point(v);
+    corner_uv[h] = Point_2(p.x() + (v == a ? 2 : 0), p.y() + (v == c ? 2 : 0));
+  }
+  const std::string file = path("seam.obj");
+  diffuv::write_obj(file, mesh, mesh.points(), corner_uv);
+  const Obj_file obj = parse_written_obj(file);
+  EXPECT_EQ(obj.v.size(), 4u);
+  EXPECT_EQ(obj.vt.size(), 6u); // a and c twice, b and d once
+  ASSERT_EQ(obj.f.size(), 2u);
+  EXPECT_TRUE(obj.other.empty());
+
+  // Each corner refers to its own vertex and to a vt holding that corner's uv.
+  std::size_t j = 0;
+  std::map<std::size_t, std::vector<std::size_t>> vts_of_vertex;
+  for(face_descriptor f : {f1, f2}) {
+    std::size_t c = 0;
+    for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, mesh), mesh)) {
+      const auto& corner = obj.f[j][c++];
+      EXPECT_EQ(corner[0], std::size_t(target(h, mesh)) + 1);
+      EXPECT_EQ(obj.vt.at(corner[1] - 1)[0], corner_uv[h].x());
+      EXPECT_EQ(obj.vt.at(corner[1] - 1)[1], corner_uv[h].y());
+      vts_of_vertex[corner[0]].push_back(corner[1]);
+    }
+    ++j;
+  }
+  EXPECT_NE(vts_of_vertex[1][0], vts_of_vertex[1][1]); // vertex a on the seam
+  EXPECT_NE(vts_of_vertex[3][0], vts_of_vertex[3][1]); // vertex c on the seam
+}
+
+TEST_F(IoWriteObj, MissingFolderThrows)
+{
+  const Mesh& mesh = diffuv_test::cgal_mesh("nefertiti.off");
+  Mesh copy = mesh;
+  auto corner_uv = copy.add_property_map<halfedge_descriptor, Point_2>("h:uv", Point_2(0, 0)).first;
+  const std::string file = path("missing/out.obj");
+  try {
+    diffuv::write_obj(file, copy, copy.points(), corner_uv);
+    ADD_FAILURE() << "no error";
+  } catch(const diffuv::Output_error& e) {
+    EXPECT_EQ(e.path(), file);
+    EXPECT_EQ(std::string(e.what()), file + ": cannot create the temporary file " + path("missing/.out.obj.tmp.") +
+                                         std::to_string(::getpid()) + " (No such file or directory)");
+  }
+  EXPECT_FALSE(fs::exists(path("missing")));
+}
+
+// ---------------------------------------------------------------------------
+// Atomic files and output folders
+
+std::string content_of(const std::string& file)
+{
+  std::ifstream in(file, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+TEST_F(IoAtomicFile, NotCommittedLeavesNothing)
+{
+  const std::string target = path("a.txt");
+  std::string temporary;
+  {
+    diffuv::Atomic_output_file file(target);
+    temporary = file.temporary_path();
+    EXPECT_EQ(temporary, path(".a.txt.tmp." + std::to_string(::getpid())));
+    file.stream() << "hello";
+    EXPECT_TRUE(fs::exists(temporary));
+    EXPECT_FALSE(fs::exists(target));
+  }
+  EXPECT_FALSE(fs::exists(target));
+  EXPECT_FALSE(fs::exists(temporary));
+  EXPECT_TRUE(fs::is_empty(dir_));
+}
+
+TEST_F(IoAtomicFile, CommitReplacesTheTarget)
+{
+  const std::string target = write("a.txt", "old");
+  {
+    diffuv::Atomic_output_file file(target);
+    file.stream() << "new content";
+    EXPECT_EQ(content_of(target), "old"); // untouched until the commit
+    file.commit();
+    EXPECT_FALSE(fs::exists(file.temporary_path()));
+  }
+  EXPECT_EQ(content_of(target), "new content");
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()), 1);
+}
+
+TEST_F(IoAtomicFile, FailedWriteKeepsTheOldFile)
+{
+  const std::string target = write("a.txt", "old");
+  diffuv::Atomic_output_file file(target);
+  file.stream() << "half";
+  file.stream().setstate(std::ios::badbit); // what a full disk does to the stream
+  try {
+    file.commit();
+    ADD_FAILURE() << "no error";
+  } catch(const diffuv::Output_error& e) {
+    EXPECT_EQ(std::string(e.what()), target + ": writing failed (disk full or I/O error)");
+  }
+  EXPECT_EQ(content_of(target), "old");
+  EXPECT_FALSE(fs::exists(file.temporary_path()));
+}
+
+TEST_F(IoAtomicFile, MissingFolderThrows)
+{
+  const std::string target = path("no/such/folder/a.txt");
+  EXPECT_THROW(diffuv::Atomic_output_file file(target), diffuv::Output_error);
+}
+
+TEST_F(IoAtomicFile, EnsureOutputDirectory)
+{
+  const std::string nested = path("x/y/z");
+  diffuv::ensure_output_directory(nested);
+  EXPECT_TRUE(fs::is_directory(nested));
+  EXPECT_TRUE(fs::is_empty(nested)); // the probe file is gone
+  diffuv::ensure_output_directory(nested); // existing: fine
+
+  const std::string file = write("plain.txt", "x");
+  try {
+    diffuv::ensure_output_directory(file);
+    ADD_FAILURE() << "no error";
+  } catch(const diffuv::Output_error& e) {
+    EXPECT_EQ(std::string(e.what()), file + ": exists and is not a directory");
+    EXPECT_EQ(e.path(), file);
+  }
+  try {
+    diffuv::ensure_output_directory(file + "/sub");
+    ADD_FAILURE() << "no error";
+  } catch(const diffuv::Output_error& e) {
+    EXPECT_EQ(std::string(e.what()), file + "/sub: cannot create the directory (Not a directory)");
+  }
+}
+
+TEST_F(IoAtomicFile, UnwritableDirectory)
+{
+  // /proc refuses new files even to root, unlike a folder without write bits.
+  if(!fs::is_directory("/proc"))
+    GTEST_SKIP() << "no /proc";
+  try {
+    diffuv::ensure_output_directory("/proc");
+    ADD_FAILURE() << "no error";
+  } catch(const diffuv::Output_error& e) {
+    EXPECT_EQ(std::string(e.what()), "/proc: the directory is not writable");
+  }
+}
+
+} // namespace
