@@ -5,5 +5,5 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build build -j"$(nproc)" --target diffuv
+cmake --build build -j"$(nproc)" --target diffuv_tool
 build/src/diffuv param -o diffuv-out "$@"

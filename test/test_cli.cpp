@@ -159,9 +159,9 @@ TEST_F(Tool, BadInputGivesOneClearLineAndWritesNothing)
       {"param " + mesh + " --corners " + range,
        "diffuv: error: " + range + ":1: vertex index 5000 is out of range (the mesh has 299 vertices)"},
       {"param " + mesh + " --corners " + inner,
-       "diffuv: error: " + inner + ":1: a corner vertex is not on the boundary of the mesh (corner 4): vertices 133 8 0 150"},
+       "diffuv: error: " + inner + ":1: a corner vertex is not on the boundary of the mesh (corner #4 listed): vertices 133 8 0 150"},
       {"param " + mesh + " --corners " + twice,
-       "diffuv: error: " + twice + ":1: a corner vertex is given twice (corners 2 and 3): vertices 133 8 8 287"},
+       "diffuv: error: " + twice + ":1: a corner vertex is given twice (corners #2 and #3 listed): vertices 133 8 8 287"},
       {"param " + mesh + " --corners " + (dir_ / "nothere.txt").string(),
        "diffuv: error: " + (dir_ / "nothere.txt").string() + ": cannot open file"},
   };

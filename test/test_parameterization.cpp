@@ -148,7 +148,7 @@ TEST(FourSides, BadCornersAreReported)
   EXPECT_EQ(diffuv::sides_from_corners(loop, {c[0], c[1], c[1], c[3]}, sides).code, diffuv::Status_code::corner_duplicated);
   const diffuv::Status inner = diffuv::sides_from_corners(loop, {c[0], c[1], grid_vertex(4, 2, 1), c[3]}, sides);
   EXPECT_EQ(inner.code, diffuv::Status_code::corner_not_on_border);
-  EXPECT_EQ(inner.detail, "corner 3");
+  EXPECT_EQ(inner.detail, "corner #3 listed");
 }
 
 TEST(FourSides, EqualArcCornersCutTheLoopIntoQuarters)

@@ -49,7 +49,7 @@ inline const char* message(Status_code code)
     case Status_code::disconnected_mesh: return "the mesh is not connected";
     case Status_code::no_border: return "the mesh is closed (no boundary), not a topological disc";
     case Status_code::several_borders: return "the mesh has several boundary loops, not a topological disc";
-    case Status_code::not_a_disc: return "the mesh is not a topological disc (Euler characteristic is not 1)";
+    case Status_code::not_a_disc: return "the mesh is not a topological disc (it has handles)";
     case Status_code::non_manifold: return "the mesh has a non-manifold vertex";
     case Status_code::corner_count: return "exactly four corner vertices are needed";
     case Status_code::corner_out_of_range: return "a corner index is not a vertex of the mesh";

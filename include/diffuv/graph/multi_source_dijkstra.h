@@ -26,6 +26,21 @@
 #include <vector>
 
 namespace diffuv {
+namespace internal {
+
+// The origin map of a run that does not ask for one: writes nothing.
+struct Ignored_origin {
+  using key_type = std::size_t;
+  using value_type = std::size_t;
+  using reference = std::size_t;
+  using category = boost::read_write_property_map_tag;
+  template <class Key>
+  friend void put(const Ignored_origin&, const Key&, std::size_t) {}
+  template <class Key>
+  friend std::size_t get(const Ignored_origin&, const Key&) { return 0; }
+};
+
+} // namespace internal
 
 /// Computes, for every vertex of a graph, its shortest-path distance to the
 /// nearest of a set of source vertices, and keeps its buffers for the next run.
@@ -77,6 +92,18 @@ public:
   template <class SourceRange, class WeightMap, class DistanceMap>
   Status run(const SourceRange& sources, WeightMap weight, DistanceMap distance)
   {
+    return run(sources, weight, distance, internal::Ignored_origin());
+  }
+
+  /// Same as above, and also fills `origin` with the position, in `sources`,
+  /// of the source each vertex is nearest to (a graph Voronoi diagram).
+  /// Unreached vertices are not written. On a tie between two sources the
+  /// vertex keeps the one that reached it first.
+  ///
+  /// 	param OriginMap a `WritablePropertyMap` from vertices to `std::size_t`
+  template <class SourceRange, class WeightMap, class DistanceMap, class OriginMap>
+  Status run(const SourceRange& sources, WeightMap weight, DistanceMap distance, OriginMap origin)
+  {
     constexpr double infinity = std::numeric_limits<double>::infinity();
     for(vertex_descriptor v : boost::make_iterator_range(vertices(graph_)))
       put(distance, v, infinity);
@@ -84,11 +111,13 @@ public:
     heap_.clear();
 
     bool any_source = false;
+    std::size_t position = 0;
     for(vertex_descriptor s : sources) {
       any_source = true;
       const std::size_t i = get(vertex_index_, s);
-      if(state_[i] == queued) continue; // listed twice
+      if(state_[i] == queued) { ++position; continue; } // listed twice: the first wins
       put(distance, s, 0.);
+      put(origin, s, position++);
       handles_[i] = heap_.push(Node{0., s});
       state_[i] = queued;
     }
@@ -110,6 +139,7 @@ public:
         const double candidate = top.distance + w; // equation (3) of the paper
         if(candidate < get(distance, v)) {
           put(distance, v, candidate);
+          put(origin, v, get(origin, top.vertex));
           if(state_[i] == queued) {
             heap_.increase(handles_[i], Node{candidate, v}); // higher priority = nearer
           } else {

@@ -19,7 +19,9 @@
 #include <filesystem>
 #include <fstream>
 #include <ostream>
+#include <memory>
 #include <string>
+#include <vector>
 #include <system_error>
 
 namespace diffuv {
@@ -145,6 +147,76 @@ inline void ensure_output_directory(const std::string& dir)
   f.close();
   fs::remove(probe, ec); // a leftover hidden probe file is harmless
 }
+
+/// The files a command writes into one folder, written all or none: each goes
+/// to a temporary file first, and only when every one is complete are they all
+/// renamed. A folder created here is removed again if nothing was committed.
+class Output_folder {
+public:
+  /// Prepares `dir` (see `ensure_output_directory()`).
+  /// \param inputs files the command reads, which no output may replace
+  /// \throws Output_error as `ensure_output_directory()`
+  explicit Output_folder(std::string dir, std::vector<std::string> inputs = {})
+    : dir_(std::move(dir)), inputs_(std::move(inputs))
+  {
+    std::error_code ec;
+    created_ = !std::filesystem::exists(dir_.empty() ? "." : dir_, ec);
+    ensure_output_directory(dir_);
+  }
+
+  Output_folder(const Output_folder&) = delete;
+  Output_folder& operator=(const Output_folder&) = delete;
+
+  /// Removes the folder if this object created it and nothing was committed
+  /// (only if empty: the temporary files are gone by then).
+  ~Output_folder()
+  {
+    files_.clear();
+    if(created_ && !committed_) {
+      std::error_code ec;
+      std::filesystem::remove(dir_, ec);
+    }
+  }
+
+  /// Starts the file `name` in the folder and returns the stream to write it.
+  /// \throws Output_error if the path is a folder, is one of the inputs, or cannot be created
+  std::ostream& open(const std::string& name)
+  {
+    namespace fs = std::filesystem;
+    const std::string path = (fs::path(dir_.empty() ? "." : dir_) / name).string();
+    std::error_code ec;
+    if(fs::is_directory(path, ec))
+      throw Output_error(path, "is a directory");
+    for(const std::string& input : inputs_)
+      if(fs::exists(input, ec) && fs::equivalent(input, path, ec))
+        throw Output_error(path, "would replace the input file " + input);
+    files_.push_back(std::make_unique<Atomic_output_file>(path));
+    return files_.back()->stream();
+  }
+
+  /// The path of each file opened, in order.
+  std::vector<std::string> paths() const
+  {
+    std::vector<std::string> p;
+    for(const auto& f : files_) p.push_back(f->path());
+    return p;
+  }
+
+  /// Renames every file onto its target.
+  /// \throws Output_error naming the first file that fails
+  void commit()
+  {
+    for(auto& f : files_) f->commit();
+    committed_ = true;
+  }
+
+private:
+  std::string dir_;
+  std::vector<std::string> inputs_;
+  std::vector<std::unique_ptr<Atomic_output_file>> files_;
+  bool created_ = false;
+  bool committed_ = false;
+};
 
 } // namespace diffuv
 

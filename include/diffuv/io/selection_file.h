@@ -15,6 +15,7 @@
 
 #include <charconv>
 #include <cstddef>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -36,6 +37,9 @@ namespace diffuv {
 ///         non-negative integer, or one too large for `std::size_t`
 inline std::vector<std::size_t> read_selection_file(const std::string& path)
 {
+  std::error_code ec;
+  if(std::filesystem::is_directory(path, ec))
+    throw Input_error(path, 0, "is a directory, not a selection file");
   std::ifstream in(path);
   if(!in)
     throw Input_error(path, 0, "cannot open file");

@@ -10,6 +10,7 @@
 
 #include <diffuv/error.h>
 #include <diffuv/io/atomic_file.h>
+#include <diffuv/io/number_format.h>
 
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/number_utils.h>
@@ -28,20 +29,17 @@
 
 namespace diffuv {
 
-/// Writes `tm` with per-corner texture coordinates as an OBJ file.
+/// Writes `tm` with per-corner texture coordinates in OBJ format to `out`.
 ///
 /// The file holds, in this order: `mtllib` (if `mtllib` is not empty), one
-/// `v` line per vertex in the order of `vertices(tm)` (17 significant digits),
+/// `v` line per vertex in the order of `vertices(tm)` (shortest exact form),
 /// one `vt` line per distinct (vertex, uv) pair in the order the faces first
-/// use it (9 significant digits), `usemtl` (if `material` is not empty), and
+/// use it (shortest exact form), `usemtl` (if `material` is not empty), and
 /// one `f v/vt v/vt v/vt` line per face in the order of `faces(tm)`, with
 /// 1-based indices. The corners of a face are the targets of the halfedges
 /// of `halfedges_around_face(halfedge(f, tm), tm)`, so the orientation of
 /// the mesh is kept. Two uv of one vertex are the same `vt` only if they are
 /// exactly equal.
-///
-/// The file is written through `Atomic_output_file`: on error, an existing
-/// file at `path` is left as it was.
 ///
 /// \tparam TriangleMesh a model of `FaceListGraph` and `VertexListGraph`
 ///         (faces with more than three corners are written as they are)
@@ -49,15 +47,14 @@ namespace diffuv {
 ///         to a 3D point with `x()`, `y()`, `z()`
 /// \tparam CornerUvMap a `ReadablePropertyMap` from `halfedge_descriptor`
 ///         to a 2D point with `x()`, `y()`: the uv of the corner `target(h)` in `face(h)`
-/// \param path the OBJ file to write; its folder must exist
+/// \param out the stream to write to
 /// \param tm the mesh
 /// \param vpm the positions of the vertices of `tm`
 /// \param corner_uv the uv of every corner of every face of `tm`
 /// \param mtllib the material library to reference, e.g. "parameterization.mtl"
 /// \param material the material used by the faces, e.g. "checkerboard"
-/// \throws Output_error naming `path` if the file cannot be created or written
 template <class TriangleMesh, class VertexPointMap, class CornerUvMap>
-void write_obj(const std::string& path,
+void write_obj(std::ostream& out,
                const TriangleMesh& tm,
                VertexPointMap vpm,
                CornerUvMap corner_uv,
@@ -114,22 +111,27 @@ void write_obj(const std::string& path,
     face_sizes.push_back(size);
   }
 
-  Atomic_output_file file(path);
-  std::ostream& out = file.stream();
   if(!mtllib.empty())
     out << "mtllib " << mtllib << '\n';
 
-  out << std::setprecision(17);
+  // Shortest exact form: input coordinates come back as they were written.
   for(vertex_descriptor v : vertices(tm)) {
     const auto& p = get(vpm, v);
-    out << "v " << CGAL::to_double(p.x()) << ' ' << CGAL::to_double(p.y()) << ' '
-        << CGAL::to_double(p.z()) << '\n';
+    out << "v ";
+    internal::write_shortest(out, CGAL::to_double(p.x()));
+    out << ' ';
+    internal::write_shortest(out, CGAL::to_double(p.y()));
+    out << ' ';
+    internal::write_shortest(out, CGAL::to_double(p.z()));
+    out << '\n';
   }
-
-  // 9 significant digits round-trip a float, more than any texture needs.
-  out << std::setprecision(9);
-  for(const auto& [u, v] : vt)
-    out << "vt " << u << ' ' << v << '\n';
+  for(const auto& [u, v] : vt) {
+    out << "vt ";
+    internal::write_shortest(out, u);
+    out << ' ';
+    internal::write_shortest(out, v);
+    out << '\n';
+  }
 
   if(!material.empty())
     out << "usemtl " << material << '\n';
@@ -141,7 +143,17 @@ void write_obj(const std::string& path,
       out << ' ' << corners[c] + 1 << '/' << corners[c + 1] + 1;
     out << '\n';
   }
+}
 
+/// Same as above, into the file `path`, through `Atomic_output_file`: on
+/// error, an existing file at `path` is left as it was.
+/// \throws Output_error naming `path` if the file cannot be created or written
+template <class TriangleMesh, class VertexPointMap, class CornerUvMap>
+void write_obj(const std::string& path, const TriangleMesh& tm, VertexPointMap vpm, CornerUvMap corner_uv,
+               const std::string& mtllib = "", const std::string& material = "")
+{
+  Atomic_output_file file(path);
+  write_obj(file.stream(), tm, vpm, corner_uv, mtllib, material);
   file.commit();
 }
 

@@ -86,10 +86,10 @@ Status sides_from_corners(const std::vector<VertexDescriptor>& loop, const std::
   for(std::size_t c = 0; c < 4; ++c) {
     for(std::size_t d = 0; d < c; ++d)
       if(corners[d] == corners[c])
-        return Status(Status_code::corner_duplicated, "corners " + std::to_string(d + 1) + " and " + std::to_string(c + 1));
+        return Status(Status_code::corner_duplicated, "corners #" + std::to_string(d + 1) + " and #" + std::to_string(c + 1) + " listed");
     const auto it = std::find(loop.begin(), loop.end(), corners[c]);
     if(it == loop.end())
-      return Status(Status_code::corner_not_on_border, "corner " + std::to_string(c + 1));
+      return Status(Status_code::corner_not_on_border, "corner #" + std::to_string(c + 1) + " listed");
     position[c] = static_cast<std::size_t>(it - loop.begin());
   }
   // Positions along the loop, counted from corners[0].

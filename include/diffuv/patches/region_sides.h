@@ -1,0 +1,163 @@
+// diffuv: the four sides of a patch from the regions around it.
+//
+// The paper (section 2.7): "the borders between two regions already form
+// suitable edges". Walking a disc patch's boundary counter-clockwise, each
+// maximal run of edges with the same neighbouring patch (or the mesh border)
+// is a natural side, and the vertices where the neighbour changes (where three
+// or more regions meet) are natural corners.
+#ifndef DIFFUV_PATCHES_REGION_SIDES_H
+#define DIFFUV_PATCHES_REGION_SIDES_H
+
+#include <diffuv/error.h>
+#include <diffuv/patches/four_sides.h>
+#include <diffuv/patches/segmentation.h>
+
+#include <algorithm>
+#include <array>
+#include <limits>
+#include <numeric>
+#include <string>
+#include <tuple>
+#include <vector>
+
+namespace diffuv {
+
+/// How the four corners of a patch were found.
+struct Side_report {
+  std::size_t runs = 0;     ///< runs of neighbours along the boundary (0: one neighbour all around)
+  std::size_t merged = 0;   ///< junctions dropped (more than four runs)
+  std::size_t split = 0;    ///< runs split at their middle (fewer than four runs)
+  bool equal_arcs = false;  ///< no junction: corners by equal arc lengths from the sharpest vertex
+};
+
+/// Computes the four sides of disc patch `p` from the runs of its neighbours.
+///
+/// Rule (deterministic):
+/// - four runs: the junctions are the corners;
+/// - more: repeatedly drop the junction between the shortest run and the
+///   shorter of its two neighbouring runs (arc length), merging them;
+/// - two: each run is split at the vertex nearest to its middle;
+///   three: the longest run is split so;
+/// - none (one neighbour all around, or the mesh border all around):
+///   `equal_arc_corners()`.
+///
+/// Side order is canonical: each side gets the key (labels of the regions
+/// along it, mesh border first), and the side whose key sequence, read
+/// counter-clockwise, is lexicographically smallest becomes `v1` (v = 0), its
+/// first corner (0,0). Ties (symmetric label sequences) are broken by the
+/// sides' arc lengths, then by the first corner found. The order therefore
+/// depends only on the labels and the surface orientation, not on vertex
+/// or face order.
+///
+/// \pre patch `p` is a topological disc (`check_patch_disc()`)
+/// \returns `border_too_short` if the boundary has fewer than four vertices, else `ok`
+template <class TriangleMesh, class VertexPointMap>
+Status region_sides(const TriangleMesh& tm, const Segmentation<TriangleMesh>& seg, std::size_t p, VertexPointMap vpm,
+                    Four_sides<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& sides,
+                    Side_report* report = nullptr)
+{
+  using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
+  const auto loops = patch_loops(tm, seg, p, vpm);
+  if(loops.size() != 1)
+    return Status(Status_code::several_borders, "patch " + std::to_string(p));
+  const Patch_loop<TriangleMesh>& loop = loops.front();
+  const std::size_t n = loop.vertices.size();
+  if(n < 4) return Status(Status_code::border_too_short, "patch " + std::to_string(p));
+  Side_report local_report;
+  Side_report& r = report ? *report : local_report;
+  r = Side_report();
+
+  std::vector<double> at(n + 1, 0.); // arc length at each loop position
+  for(std::size_t i = 0; i < n; ++i) at[i + 1] = at[i] + loop.length[i];
+  auto arc = [&](std::size_t a, std::size_t b) { return b > a ? at[b] - at[a] : at[n] - at[a] + at[b]; };
+
+  std::vector<std::size_t> corners; // loop positions, increasing
+  for(std::size_t i = 0; i < n; ++i)
+    if(loop.neighbour[(i + n - 1) % n] != loop.neighbour[i]) corners.push_back(i);
+  r.runs = corners.size();
+
+  if(corners.empty()) {
+    r.equal_arcs = true;
+    const auto chosen = equal_arc_corners(tm, vpm, loop.vertices);
+    for(auto v : chosen)
+      corners.push_back(static_cast<std::size_t>(std::find(loop.vertices.begin(), loop.vertices.end(), v) -
+                                                 loop.vertices.begin()));
+    std::sort(corners.begin(), corners.end());
+  }
+  // More than four runs: merge the shortest run into its shorter neighbour.
+  while(corners.size() > 4) {
+    const std::size_t k = corners.size();
+    std::size_t shortest = 0;
+    for(std::size_t c = 1; c < k; ++c)
+      if(arc(corners[c], corners[(c + 1) % k]) < arc(corners[shortest], corners[(shortest + 1) % k])) shortest = c;
+    const double before = arc(corners[(shortest + k - 1) % k], corners[shortest]);
+    const double after = arc(corners[(shortest + 1) % k], corners[(shortest + 2) % k]);
+    corners.erase(corners.begin() + static_cast<std::ptrdiff_t>(before <= after ? shortest : (shortest + 1) % k));
+    ++r.merged;
+  }
+  // Fewer than four: split runs at the vertex nearest to their middle.
+  auto middle = [&](std::size_t a, std::size_t b) { // loop position, or n if the run has one edge
+    std::size_t best = n;
+    double best_gap = std::numeric_limits<double>::infinity();
+    for(std::size_t i = (a + 1) % n; i != b; i = (i + 1) % n) {
+      const double gap = std::abs(arc(a, i) - arc(a, b) / 2);
+      if(gap < best_gap) { best_gap = gap; best = i; }
+    }
+    return best;
+  };
+  if(corners.size() == 2) { // two runs: split both, so neither is favoured
+    const std::size_t m0 = middle(corners[0], corners[1]), m1 = middle(corners[1], corners[0]);
+    for(std::size_t m : {m0, m1})
+      if(m != n) { corners.push_back(m); ++r.split; }
+    std::sort(corners.begin(), corners.end());
+  }
+  while(corners.size() < 4) { // split the longest run that has a middle vertex
+    const std::size_t k = corners.size();
+    std::size_t best_run = k, best_middle = n;
+    for(std::size_t c = 0; c < k; ++c) {
+      const std::size_t m = middle(corners[c], corners[(c + 1) % k]);
+      if(m != n && (best_run == k || arc(corners[c], corners[(c + 1) % k]) >
+                                         arc(corners[best_run], corners[(best_run + 1) % k]))) {
+        best_run = c;
+        best_middle = m;
+      }
+    }
+    if(best_run == k) return Status(Status_code::border_too_short, "patch " + std::to_string(p));
+    corners.push_back(best_middle);
+    std::sort(corners.begin(), corners.end());
+    ++r.split;
+  }
+
+  // Canonical rotation: the sides' region keys, then their lengths.
+  auto key_of = [&](std::size_t c) { // labels along side c, consecutive repeats removed
+    std::vector<long long> key;
+    for(std::size_t i = corners[c]; i != corners[(c + 1) % 4]; i = (i + 1) % n) {
+      const long long label = loop.neighbour[i] == Patch_loop<TriangleMesh>::mesh_border
+                                  ? std::numeric_limits<long long>::min()
+                                  : seg.patch_label[loop.neighbour[i]];
+      if(key.empty() || key.back() != label) key.push_back(label);
+    }
+    return key;
+  };
+  std::array<std::vector<long long>, 4> keys;
+  std::array<double, 4> lengths;
+  for(std::size_t c = 0; c < 4; ++c) {
+    keys[c] = key_of(c);
+    lengths[c] = arc(corners[c], corners[(c + 1) % 4]);
+  }
+  auto rotation_key = [&](std::size_t s) {
+    return std::make_tuple(std::array<std::vector<long long>, 4>{keys[s], keys[(s + 1) % 4], keys[(s + 2) % 4], keys[(s + 3) % 4]},
+                           std::array<double, 4>{lengths[s], lengths[(s + 1) % 4], lengths[(s + 2) % 4], lengths[(s + 3) % 4]});
+  };
+  std::size_t first = 0;
+  for(std::size_t s = 1; s < 4; ++s)
+    if(rotation_key(s) < rotation_key(first)) first = s;
+
+  std::vector<vertex_descriptor> ordered;
+  for(std::size_t c = 0; c < 4; ++c) ordered.push_back(loop.vertices[corners[(first + c) % 4]]);
+  return sides_from_corners(loop.vertices, ordered, sides);
+}
+
+} // namespace diffuv
+
+#endif // DIFFUV_PATCHES_REGION_SIDES_H

@@ -1,0 +1,392 @@
+// diffuv: a mesh cut into patches (the paper's section 2.7).
+//
+// A segmentation gives every face a patch; a patch is a connected set of
+// faces of one region label. Patches come from labels (painted by a person,
+// or read from a file) or from an automatic graph-Voronoi partition refined
+// until every patch is a topological disc.
+#ifndef DIFFUV_PATCHES_SEGMENTATION_H
+#define DIFFUV_PATCHES_SEGMENTATION_H
+
+#include <diffuv/error.h>
+#include <diffuv/graph/edge_length_map.h>
+#include <diffuv/graph/multi_source_dijkstra.h>
+#include <diffuv/patches/disc_topology.h>
+
+#include <CGAL/boost/graph/Face_filtered_graph.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/centroid.h>
+
+#include <boost/graph/adjacency_list.hpp>
+#include <boost/graph/graph_traits.hpp>
+
+#include <algorithm>
+#include <cstddef>
+#include <limits>
+#include <map>
+#include <numeric>
+#include <string>
+#include <vector>
+
+namespace diffuv {
+
+/// Every face of a mesh assigned to a patch.
+template <class TriangleMesh>
+struct Segmentation {
+  using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
+  static constexpr std::size_t no_patch = std::numeric_limits<std::size_t>::max();
+
+  std::vector<std::size_t> face_patch;                    ///< #F entries (by face index): the face's patch
+  std::vector<int> patch_label;                           ///< #P entries: the region label of each patch
+  std::vector<int> patch_part;                            ///< #P entries: 0, or 1, 2, ... for the pieces of a region cut in parts
+  std::vector<std::vector<face_descriptor>> patch_faces;  ///< #P entries: the faces of each patch
+
+  std::size_t number_of_patches() const { return patch_faces.size(); }
+
+  /// Replaces patch `p` by `pieces` (same label, parts 1, 2, ... in the given
+  /// order), inserted where `p` was so that the order of the others is kept.
+  template <class FaceIndexMap>
+  void split(std::size_t p, std::vector<std::vector<face_descriptor>> pieces, FaceIndexMap findex)
+  {
+    const int label = patch_label[p];
+    const int base = patch_part[p] == 0 ? 0 : patch_part[p] * 10; // a piece of a piece keeps a distinct part number
+    patch_label.erase(patch_label.begin() + static_cast<std::ptrdiff_t>(p));
+    patch_part.erase(patch_part.begin() + static_cast<std::ptrdiff_t>(p));
+    patch_faces.erase(patch_faces.begin() + static_cast<std::ptrdiff_t>(p));
+    for(std::size_t k = 0; k < pieces.size(); ++k) {
+      patch_label.insert(patch_label.begin() + static_cast<std::ptrdiff_t>(p + k), label);
+      patch_part.insert(patch_part.begin() + static_cast<std::ptrdiff_t>(p + k), base + static_cast<int>(k) + 1);
+      patch_faces.insert(patch_faces.begin() + static_cast<std::ptrdiff_t>(p + k), std::move(pieces[k]));
+    }
+    for(std::size_t q = 0; q < patch_faces.size(); ++q)
+      for(face_descriptor f : patch_faces[q]) face_patch[get(findex, f)] = q;
+  }
+};
+
+/// A boundary loop of a patch, walked counter-clockwise (interior on the left).
+template <class TriangleMesh>
+struct Patch_loop {
+  using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
+  using halfedge_descriptor = typename boost::graph_traits<TriangleMesh>::halfedge_descriptor;
+  static constexpr std::size_t mesh_border = std::numeric_limits<std::size_t>::max();
+
+  std::vector<vertex_descriptor> vertices;      ///< n entries; edge i goes from vertices[i] to vertices[i+1 mod n]
+  std::vector<halfedge_descriptor> halfedges;   ///< n entries: edge i as the patch's halfedge
+  std::vector<std::size_t> neighbour;           ///< n entries: patch across edge i, or `mesh_border`
+  std::vector<double> length;                   ///< n entries: 3D length of edge i
+};
+
+/// Groups faces into patches: the connected components (across edges) of
+/// faces with equal labels. Faces labelled `ignore_label` get no patch.
+///
+/// Patches are ordered by label, then by decreasing 3D area (a canonical order
+/// when a label has several components; equal areas fall back on the lowest face index).
+///
+/// \tparam TriangleMesh a model of `FaceListGraph` with internal face index
+/// \param face_labels #F entries, by face index
+template <class TriangleMesh, class VertexPointMap>
+Segmentation<TriangleMesh> patches_from_labels(const TriangleMesh& tm, const std::vector<int>& face_labels,
+                                               VertexPointMap vpm,
+                                               int ignore_label = std::numeric_limits<int>::min())
+{
+  using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
+  constexpr std::size_t none = Segmentation<TriangleMesh>::no_patch;
+  auto findex = get(boost::face_index, tm);
+  std::vector<face_descriptor> face_of(num_faces(tm));
+  for(face_descriptor f : faces(tm)) face_of[get(findex, f)] = f;
+
+  // Components by breadth-first search over edges joining equal labels.
+  std::vector<std::size_t> component(num_faces(tm), none);
+  std::vector<std::vector<face_descriptor>> members;
+  std::vector<int> labels;
+  for(std::size_t start = 0; start < face_of.size(); ++start) {
+    if(component[start] != none || face_labels[start] == ignore_label) continue;
+    const std::size_t c = members.size();
+    members.emplace_back();
+    labels.push_back(face_labels[start]);
+    std::vector<std::size_t> queue = {start};
+    component[start] = c;
+    for(std::size_t q = 0; q < queue.size(); ++q) {
+      const face_descriptor f = face_of[queue[q]];
+      members[c].push_back(f);
+      for(auto h : CGAL::halfedges_around_face(halfedge(f, tm), tm)) {
+        const auto g = face(opposite(h, tm), tm);
+        if(g == boost::graph_traits<TriangleMesh>::null_face()) continue;
+        const std::size_t gi = get(findex, g);
+        if(component[gi] == none && face_labels[gi] == labels[c]) {
+          component[gi] = c;
+          queue.push_back(gi);
+        }
+      }
+    }
+  }
+
+  // Canonical order: label, then decreasing area, then lowest face index.
+  std::vector<double> area(members.size(), 0.);
+  std::vector<std::size_t> lowest(members.size(), none);
+  for(std::size_t c = 0; c < members.size(); ++c)
+    for(face_descriptor f : members[c]) {
+      area[c] += CGAL::to_double(CGAL::Polygon_mesh_processing::face_area(f, tm, CGAL::parameters::vertex_point_map(vpm)));
+      lowest[c] = (std::min)(lowest[c], static_cast<std::size_t>(get(findex, f)));
+    }
+  std::vector<std::size_t> order(members.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    if(labels[a] != labels[b]) return labels[a] < labels[b];
+    if(area[a] != area[b]) return area[a] > area[b];
+    return lowest[a] < lowest[b];
+  });
+
+  Segmentation<TriangleMesh> seg;
+  seg.face_patch.assign(num_faces(tm), none);
+  for(std::size_t p = 0; p < order.size(); ++p) {
+    seg.patch_label.push_back(labels[order[p]]);
+    seg.patch_part.push_back(0);
+    seg.patch_faces.push_back(std::move(members[order[p]]));
+    for(face_descriptor f : seg.patch_faces.back()) seg.face_patch[get(findex, f)] = p;
+  }
+  return seg;
+}
+
+/// Returns the boundary loops of patch `p`, each counter-clockwise, with the
+/// patch across each edge. A disc patch has exactly one.
+template <class TriangleMesh, class VertexPointMap>
+std::vector<Patch_loop<TriangleMesh>> patch_loops(const TriangleMesh& tm, const Segmentation<TriangleMesh>& seg,
+                                                  std::size_t p, VertexPointMap vpm)
+{
+  using halfedge_descriptor = typename boost::graph_traits<TriangleMesh>::halfedge_descriptor;
+  auto findex = get(boost::face_index, tm);
+  auto hindex = get(boost::halfedge_index, tm);
+  auto patch_of = [&](halfedge_descriptor h) {
+    const auto f = face(h, tm);
+    return f == boost::graph_traits<TriangleMesh>::null_face() ? Patch_loop<TriangleMesh>::mesh_border
+                                                                : seg.face_patch[get(findex, f)];
+  };
+  // A boundary halfedge of p: in a face of p, its opposite in another patch or on the border.
+  auto on_boundary = [&](halfedge_descriptor h) { return patch_of(h) == p && patch_of(opposite(h, tm)) != p; };
+
+  std::vector<Patch_loop<TriangleMesh>> loops;
+  std::vector<bool> used(num_halfedges(tm), false);
+  for(auto f : seg.patch_faces[p])
+    for(halfedge_descriptor start : CGAL::halfedges_around_face(halfedge(f, tm), tm)) {
+      if(!on_boundary(start) || used[get(hindex, start)]) continue;
+      Patch_loop<TriangleMesh> loop;
+      halfedge_descriptor h = start;
+      do {
+        used[get(hindex, h)] = true;
+        loop.vertices.push_back(source(h, tm));
+        loop.halfedges.push_back(h);
+        loop.neighbour.push_back(patch_of(opposite(h, tm)));
+        loop.length.push_back(std::sqrt(CGAL::to_double(
+            CGAL::squared_distance(get(vpm, source(h, tm)), get(vpm, target(h, tm))))));
+        // The next boundary halfedge leaves target(h): turn around it through p's faces.
+        halfedge_descriptor g = next(h, tm);
+        while(!on_boundary(g)) g = next(opposite(g, tm), tm);
+        h = g;
+      } while(h != start);
+      loops.push_back(std::move(loop));
+    }
+  return loops;
+}
+
+/// Relabels the faces of every patch whose boundary has fewer than
+/// `min_boundary_vertices` vertices (a sliver or a lone face cannot have four
+/// sides) with the label of the neighbouring patch that shares the longest
+/// boundary with it, then rebuilds the patches; repeats until none is left.
+///
+/// \returns how many patches were merged
+template <class TriangleMesh, class VertexPointMap>
+std::size_t merge_small_patches(const TriangleMesh& tm, std::vector<int>& face_labels,
+                                Segmentation<TriangleMesh>& seg, VertexPointMap vpm,
+                                std::size_t min_boundary_vertices = 4)
+{
+  auto findex = get(boost::face_index, tm);
+  std::size_t merged = 0;
+  for(bool changed = true; changed;) {
+    changed = false;
+    for(std::size_t p = 0; p < seg.number_of_patches() && !changed; ++p) {
+      const auto loops = patch_loops(tm, seg, p, vpm);
+      std::size_t boundary_vertices = 0;
+      std::map<std::size_t, double> shared; // neighbour patch -> shared length
+      for(const auto& loop : loops) {
+        boundary_vertices += loop.vertices.size();
+        for(std::size_t i = 0; i < loop.vertices.size(); ++i)
+          if(loop.neighbour[i] != Patch_loop<TriangleMesh>::mesh_border) shared[loop.neighbour[i]] += loop.length[i];
+      }
+      if(boundary_vertices >= min_boundary_vertices || shared.empty()) continue;
+      std::size_t best = shared.begin()->first;
+      for(const auto& [q, len] : shared)
+        if(len > shared[best]) best = q;
+      for(auto f : seg.patch_faces[p]) face_labels[get(findex, f)] = seg.patch_label[best];
+      seg = patches_from_labels(tm, face_labels, vpm);
+      ++merged;
+      changed = true;
+    }
+  }
+  return merged;
+}
+
+/// Checks that patch `p` is a topological disc (see `check_disc()`).
+template <class TriangleMesh>
+Status check_patch_disc(const TriangleMesh& tm, const Segmentation<TriangleMesh>& seg, std::size_t p)
+{
+  const CGAL::Face_filtered_graph<TriangleMesh> patch(tm, seg.patch_faces[p]);
+  Status s = check_disc(patch);
+  if(!s) s.detail = "patch " + std::to_string(p) + " (label " + std::to_string(seg.patch_label[p]) + ")" +
+                    (s.detail.empty() ? "" : ": " + s.detail);
+  return s;
+}
+
+/// Moves "ear" faces across region borders: a face with two or more edges on
+/// the border of its region towards one same other region joins that region.
+/// Such a face has all three vertices on one side of its patch, so any map onto
+/// the square flattens it; moving it also straightens the border.
+///
+/// \param face_labels #F entries, changed in place
+/// \param ignore_label faces with this label are left alone, and no face takes it
+/// \returns how many faces changed label
+template <class TriangleMesh>
+std::size_t smooth_region_borders(const TriangleMesh& tm, std::vector<int>& face_labels, std::size_t passes = 3,
+                                  int ignore_label = std::numeric_limits<int>::min())
+{
+  auto findex = get(boost::face_index, tm);
+  std::size_t changed = 0;
+  for(std::size_t pass = 0; pass < passes; ++pass) {
+    std::size_t this_pass = 0;
+    for(auto f : faces(tm)) {
+      const int own = face_labels[get(findex, f)];
+      if(own == ignore_label) continue; // outside the faces being cut
+      int across[3];
+      int k = 0;
+      for(auto h : CGAL::halfedges_around_face(halfedge(f, tm), tm)) {
+        const auto g = face(opposite(h, tm), tm);
+        across[k++] = g == boost::graph_traits<TriangleMesh>::null_face() ? own : face_labels[get(findex, g)];
+        if(k == 3) break;
+      }
+      if(k != 3) continue;
+      for(int a = 0; a < 3; ++a)
+        if(across[a] != own && across[a] != ignore_label &&
+           (across[a] == across[(a + 1) % 3] || across[a] == across[(a + 2) % 3])) {
+          face_labels[get(findex, f)] = across[a];
+          ++this_pass;
+          break;
+        }
+    }
+    changed += this_pass;
+    if(this_pass == 0) break;
+  }
+  return changed;
+}
+
+/// Options of `voronoi_discs()`.
+struct Voronoi_options {
+  std::size_t patches = 12;       ///< how many seeds to start from (farthest-point sampling)
+  std::size_t max_patches = 400;  ///< stop adding seeds beyond this many, even if some patch is not a disc
+};
+
+/// Cuts the faces `region` of `tm` into topological discs: farthest-point
+/// seeds and a graph-Voronoi partition of the faces, computed by our
+/// multi-source Dijkstra on the dual graph (faces joined across edges,
+/// weighted by the distance between their centroids), region borders
+/// smoothed (`smooth_region_borders()`), pieces with fewer than four boundary
+/// vertices merged into a neighbour, and a new seed at the face of the
+/// largest non-disc patch farthest from the seeds, until every patch is a disc.
+///
+/// Deterministic: the first seed is an end of the region's diameter (the face
+/// farthest from the face farthest from the first face), then farthest-point sampling, so the result does not depend on the
+/// coordinate axes, and another vertex or face order changes it only when two
+/// faces are exactly equally far.
+///
+/// \param region the faces to cut (a connected set)
+/// \param face_labels #F entries: receives, for the faces of `region`, labels
+///        `first_label`, `first_label + 1`, ... (one per final patch); other faces untouched
+/// \returns the number of seeds used
+template <class TriangleMesh, class VertexPointMap>
+std::size_t voronoi_discs(const TriangleMesh& tm,
+                          const std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>& region,
+                          VertexPointMap vpm, std::vector<int>& face_labels, int first_label,
+                          const Voronoi_options& options = Voronoi_options())
+{
+  using Dual = boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS, boost::no_property,
+                                     boost::property<boost::edge_weight_t, double>>;
+  auto findex = get(boost::face_index, tm);
+  const std::size_t n = region.size();
+  if(n == 0) return 0;
+  std::vector<std::size_t> local(num_faces(tm), n); // face index -> position in region
+  for(std::size_t i = 0; i < n; ++i) local[get(findex, region[i])] = i;
+  auto centroid = [&](auto f) {
+    auto h = halfedge(f, tm);
+    return CGAL::centroid(get(vpm, source(h, tm)), get(vpm, target(h, tm)), get(vpm, target(next(h, tm), tm)));
+  };
+  Dual dual(n);
+  for(std::size_t i = 0; i < n; ++i)
+    for(auto h : CGAL::halfedges_around_face(halfedge(region[i], tm), tm)) {
+      const auto g = face(opposite(h, tm), tm);
+      if(g == boost::graph_traits<TriangleMesh>::null_face()) continue;
+      const std::size_t j = local[get(findex, g)];
+      if(j < n && i < j)
+        boost::add_edge(i, j, std::sqrt(CGAL::to_double(CGAL::squared_distance(centroid(region[i]), centroid(region[j])))), dual);
+    }
+
+  Multi_source_dijkstra<Dual> dijkstra(dual);
+  std::vector<double> distance(n);
+  std::vector<std::size_t> origin(n, 0);
+  auto dindex = get(boost::vertex_index, dual);
+  auto dmap = boost::make_iterator_property_map(distance.begin(), dindex);
+  auto omap = boost::make_iterator_property_map(origin.begin(), dindex);
+  auto weight = get(boost::edge_weight, dual);
+  auto farthest = [&](auto keep) { // the reached face with the largest distance among those kept, or n
+    std::size_t best = n;
+    for(std::size_t i = 0; i < n; ++i)
+      if(keep(i) && distance[i] < std::numeric_limits<double>::infinity() && (best == n || distance[i] > distance[best]))
+        best = i;
+    return best;
+  };
+  auto all = [](std::size_t) { return true; };
+
+  // Two sweeps: the face farthest from the face farthest from the first one,
+  // an end of the region's diameter, whatever face comes first.
+  std::vector<std::size_t> seeds = {0};
+  for(int sweep = 0; sweep < 2; ++sweep) {
+    dijkstra.run(seeds, weight, dmap, omap);
+    seeds = {farthest(all)};
+  }
+  const std::size_t target = options.patches > 0 ? options.patches : 1;
+
+  while(true) {
+    dijkstra.run(seeds, weight, dmap, omap);
+    if(seeds.size() < target && seeds.size() < n) {
+      seeds.push_back(farthest(all));
+      continue;
+    }
+    // Labels of the region's faces by cell; faces outside hidden behind one sentinel.
+    std::vector<int> labels(num_faces(tm), std::numeric_limits<int>::min());
+    for(std::size_t i = 0; i < n; ++i) labels[get(findex, region[i])] = static_cast<int>(origin[i]);
+    smooth_region_borders(tm, labels);
+    Segmentation<TriangleMesh> seg = patches_from_labels(tm, labels, vpm);
+    merge_small_patches(tm, labels, seg, vpm);
+
+    std::size_t worst = seg.number_of_patches();
+    for(std::size_t p = 0; p < seg.number_of_patches(); ++p)
+      if(!check_patch_disc(tm, seg, p) &&
+         (worst == seg.number_of_patches() || seg.patch_faces[p].size() > seg.patch_faces[worst].size()))
+        worst = p;
+    std::size_t next = n;
+    if(worst != seg.number_of_patches() && seeds.size() < options.max_patches) {
+      std::vector<bool> in_worst(n, false);
+      for(auto f : seg.patch_faces[worst]) in_worst[local[get(findex, f)]] = true;
+      next = farthest([&](std::size_t i) { return in_worst[i] && distance[i] > 0.; });
+    }
+    if(next == n) { // every patch is a disc, or no seed can be added
+      for(std::size_t p = 0; p < seg.number_of_patches(); ++p)
+        for(auto f : seg.patch_faces[p]) face_labels[get(findex, f)] = first_label + static_cast<int>(p);
+      return seeds.size();
+    }
+    seeds.push_back(next);
+  }
+}
+
+} // namespace diffuv
+
+#endif // DIFFUV_PATCHES_SEGMENTATION_H

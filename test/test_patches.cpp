@@ -1,0 +1,343 @@
+// Tests of segmented meshes: patches from labels, canonical sides, repairs
+// (small pieces, non-disc regions, caps), automatic patches.
+#include "test_data.h"
+
+#include <diffuv/parameterization/parameterize_patches.h>
+#include <diffuv/patches/disc_patches.h>
+#include <diffuv/patches/region_sides.h>
+
+#include <algorithm>
+#include <numeric>
+#include <random>
+#include <set>
+
+namespace {
+
+using namespace diffuv_test;
+using vertex_descriptor = Mesh::Vertex_index;
+using face_descriptor = Mesh::Face_index;
+using Seg = diffuv::Segmentation<Mesh>;
+
+Point_3 face_centroid(const Mesh& m, face_descriptor f)
+{
+  auto h = m.halfedge(f);
+  return CGAL::centroid(m.point(m.source(h)), m.point(m.target(h)), m.point(m.target(m.next(h))));
+}
+
+// A 3x3 block labelling of a 9x9 grid: block (bx, by) has label 3 * by + bx.
+std::vector<int> block_labels(const Mesh& grid)
+{
+  std::vector<int> labels(num_faces(grid));
+  for(auto f : faces(grid)) {
+    const Point_3 c = face_centroid(grid, f);
+    labels[f.idx()] = 3 * std::min(2, int(c.y() * 3)) + std::min(2, int(c.x() * 3));
+  }
+  return labels;
+}
+
+// A closed round mesh of CGAL's data set (812 vertices).
+const Mesh& sphere() { return cgal_mesh("larger_sphere.off"); }
+
+TEST(Patches, ComponentsOfLabelsInCanonicalOrder)
+{
+  const Mesh grid = make_grid(9, 9);
+  std::vector<int> labels = block_labels(grid);
+  // Give blocks 0 and 8 (opposite corners, not adjacent) the same label 20:
+  // two components of one label, ordered by decreasing area.
+  for(auto f : faces(grid)) {
+    if(labels[f.idx()] == 0) labels[f.idx()] = 20;
+  }
+  // Make block 8 larger by also relabelling block 7 -> 20 (adjacent to 8: one component of 2 blocks).
+  for(auto f : faces(grid))
+    if(labels[f.idx()] == 8 || labels[f.idx()] == 7) labels[f.idx()] = 20;
+  const Seg seg = diffuv::patches_from_labels(grid, labels, grid.points());
+  ASSERT_EQ(seg.number_of_patches(), 8u); // labels 1..6 and two components of 20
+  for(std::size_t p = 0; p < 6; ++p) EXPECT_EQ(seg.patch_label[p], int(p) + 1);
+  EXPECT_EQ(seg.patch_label[6], 20);
+  EXPECT_EQ(seg.patch_label[7], 20);
+  EXPECT_EQ(seg.patch_faces[6].size(), 36u); // blocks 7 and 8, larger first
+  EXPECT_EQ(seg.patch_faces[7].size(), 18u); // block 0
+  for(std::size_t p = 0; p < seg.number_of_patches(); ++p)
+    for(auto f : seg.patch_faces[p]) EXPECT_EQ(seg.face_patch[f.idx()], p);
+}
+
+TEST(Patches, BordersBetweenRegionsAreTheSides)
+{
+  const Mesh grid = make_grid(9, 9);
+  const Seg seg = diffuv::patches_from_labels(grid, block_labels(grid), grid.points());
+  const std::size_t centre = 4; // label 4: neighbours 1 (below), 5 (right), 7 (above), 3 (left)
+  ASSERT_EQ(seg.patch_label[centre], 4);
+  diffuv::Four_sides<vertex_descriptor> sides;
+  diffuv::Side_report report;
+  ASSERT_TRUE(diffuv::region_sides(grid, seg, centre, grid.points(), sides, &report).ok());
+  EXPECT_EQ(report.runs, 4u);
+  EXPECT_EQ(report.merged + report.split, 0u);
+  // Junctions are the block's corners; the side towards the smallest label (1, below) is v1.
+  EXPECT_EQ(sides.corners[0], grid_vertex(9, 3, 3));
+  EXPECT_EQ(sides.corners[1], grid_vertex(9, 6, 3));
+  EXPECT_EQ(sides.corners[2], grid_vertex(9, 6, 6));
+  EXPECT_EQ(sides.corners[3], grid_vertex(9, 3, 6));
+  EXPECT_EQ(sides.v1.size(), 4u);
+
+  // A corner block: two neighbours and the mesh border (first in the order).
+  diffuv::Four_sides<vertex_descriptor> corner_sides;
+  ASSERT_TRUE(diffuv::region_sides(grid, seg, 0, grid.points(), corner_sides, &report).ok());
+  EXPECT_EQ(report.runs, 3u); // border, label 1, label 3 -> the border run is split
+  EXPECT_EQ(report.split, 1u);
+}
+
+TEST(Patches, SideOrderDependsOnLabelsNotOnVertexOrFaceOrder)
+{
+  // Cow, cut automatically; then the same labelled surface with vertices and
+  // faces shuffled must give every vertex the same (patch, u, v).
+  const Mesh& cow = cgal_mesh("cow.off");
+  std::vector<int> labels(num_faces(cow), 0);
+  diffuv::voronoi_discs(cow, std::vector<face_descriptor>(faces(cow).begin(), faces(cow).end()), cow.points(), labels, 0);
+
+  std::mt19937 rng(11);
+  std::vector<std::size_t> vperm(num_vertices(cow)), fperm(num_faces(cow));
+  std::iota(vperm.begin(), vperm.end(), 0);
+  std::iota(fperm.begin(), fperm.end(), 0);
+  std::shuffle(vperm.begin(), vperm.end(), rng);
+  std::shuffle(fperm.begin(), fperm.end(), rng); // new face k is old face fperm[k]
+  Mesh shuffled;
+  std::vector<std::size_t> vinv(vperm.size());
+  for(std::size_t i = 0; i < vperm.size(); ++i) vinv[vperm[i]] = i; // old i -> new vperm[i]
+  for(std::size_t k = 0; k < vperm.size(); ++k) shuffled.add_vertex(cow.point(vertex_descriptor(Mesh::size_type(vinv[k]))));
+  std::vector<int> shuffled_labels;
+  for(std::size_t k = 0; k < fperm.size(); ++k) {
+    std::vector<vertex_descriptor> fv;
+    for(auto v : vertices_around_face(cow.halfedge(face_descriptor(Mesh::size_type(fperm[k]))), cow))
+      fv.push_back(vertex_descriptor(Mesh::size_type(vperm[v.idx()])));
+    shuffled.add_face(fv);
+    shuffled_labels.push_back(labels[fperm[k]]);
+  }
+
+  Seg a, b;
+  ASSERT_TRUE(diffuv::disc_patches(cow, labels, cow.points(), a).ok());
+  ASSERT_TRUE(diffuv::disc_patches(shuffled, shuffled_labels, shuffled.points(), b).ok());
+  ASSERT_EQ(a.number_of_patches(), b.number_of_patches());
+  diffuv::Uv_atlas<Mesh> atlas_a(cow), atlas_b(shuffled);
+  const auto ra = diffuv::parameterize_patches(cow, a, cow.points(), atlas_a);
+  const auto rb = diffuv::parameterize_patches(shuffled, b, shuffled.points(), atlas_b);
+  std::size_t compared = 0;
+  for(std::size_t p = 0; p < a.number_of_patches(); ++p) {
+    ASSERT_EQ(a.patch_label[p], b.patch_label[p]);
+    ASSERT_TRUE(ra[p].status.ok() && rb[p].status.ok()) << "patch " << p;
+    const auto uva = atlas_a.chart_uv_map(ra[p].chart);
+    const auto uvb = atlas_b.chart_uv_map(rb[p].chart);
+    for(auto v : atlas_a.chart(ra[p].chart).vertices) {
+      const Point_2 x = get(uva, v), y = get(uvb, vertex_descriptor(Mesh::size_type(vperm[v.idx()])));
+      EXPECT_NEAR(x.x(), y.x(), 1e-12) << "patch " << p << " vertex " << v;
+      EXPECT_NEAR(x.y(), y.y(), 1e-12) << "patch " << p << " vertex " << v;
+      ++compared;
+    }
+  }
+  EXPECT_GE(compared, num_vertices(cow));
+}
+
+TEST(Patches, EarFacesMoveAcrossRegionBorders)
+{
+  const Mesh grid = make_grid(4, 4);
+  std::vector<int> labels(num_faces(grid), 0);
+  // One face of label 1 sticking into region 0 along two of its edges... the
+  // reverse: a label-0 face surrounded on two sides by label 1.
+  for(auto f : faces(grid)) if(face_centroid(grid, f).x() > 0.5) labels[f.idx()] = 1;
+  // The lower triangle of cell (1, 1) has edges towards cell (2,1) [label 1] only on one side:
+  // flip a face inside region 1 to label 0 so that it has two label-1 neighbours.
+  face_descriptor island;
+  for(auto f : faces(grid)) {
+    const Point_3 c = face_centroid(grid, f);
+    if(c.x() > 0.75 && c.y() > 0.25 && c.y() < 0.5 && c.x() - 0.75 > c.y() - 0.25) { island = f; break; }
+  }
+  labels[island.idx()] = 0;
+  const std::size_t changed = diffuv::smooth_region_borders(grid, labels);
+  EXPECT_GE(changed, 1u);
+  EXPECT_EQ(labels[island.idx()], 1);
+}
+
+TEST(Patches, SmallPiecesAreMergedIntoANeighbour)
+{
+  const Mesh grid = make_grid(6, 6);
+  std::vector<int> labels(num_faces(grid), 0);
+  labels[17] = 5; // a lone triangle: three boundary vertices, cannot have four sides
+  Seg seg = diffuv::patches_from_labels(grid, labels, grid.points());
+  ASSERT_EQ(seg.number_of_patches(), 2u);
+  EXPECT_EQ(diffuv::merge_small_patches(grid, labels, seg, grid.points()), 1u);
+  EXPECT_EQ(seg.number_of_patches(), 1u);
+  EXPECT_EQ(labels[17], 0);
+}
+
+// Labels of a closed round mesh by height: caps above and below, a band between.
+std::vector<int> banded_labels(const Mesh& m, double cap)
+{
+  std::vector<int> labels(num_faces(m));
+  double zmin = 1e300, zmax = -1e300;
+  for(auto v : vertices(m)) { zmin = std::min(zmin, m.point(v).z()); zmax = std::max(zmax, m.point(v).z()); }
+  for(auto f : faces(m)) {
+    const double t = (face_centroid(m, f).z() - zmin) / (zmax - zmin);
+    labels[f.idx()] = t > 1 - cap ? 2 : (t < cap ? 0 : 1);
+  }
+  return labels;
+}
+
+TEST(Patches, NonDiscRegionsAreCutIntoDiscsOrReported)
+{
+  const Mesh& m = sphere();
+  const std::vector<int> labels = banded_labels(m, 0.25); // caps 0 and 2 around band 1 (an annulus)
+  Seg raw = diffuv::patches_from_labels(m, labels, m.points());
+  ASSERT_EQ(raw.number_of_patches(), 3u);
+  EXPECT_EQ(diffuv::check_patch_disc(m, raw, 1).code, diffuv::Status_code::several_borders);
+
+  // Strict: the annulus is reported, not cut.
+  diffuv::Patching_options strict;
+  strict.strict = true;
+  Seg s;
+  diffuv::Patching_report sr;
+  EXPECT_EQ(diffuv::disc_patches(m, labels, m.points(), s, strict, &sr).code, diffuv::Status_code::several_borders);
+  ASSERT_EQ(sr.not_discs.size(), 1u);
+  EXPECT_EQ(s.patch_label[sr.not_discs.front()], 1);
+
+  // Default: the annulus is cut into disc pieces, each of label 1, numbered parts.
+  Seg seg;
+  diffuv::Patching_report report;
+  ASSERT_TRUE(diffuv::disc_patches(m, labels, m.points(), seg, diffuv::Patching_options(), &report).ok());
+  EXPECT_EQ(report.cut, 1u);
+  std::size_t band_faces = 0, pieces = 0;
+  for(std::size_t p = 0; p < seg.number_of_patches(); ++p) {
+    EXPECT_TRUE(diffuv::check_patch_disc(m, seg, p).ok()) << p;
+    if(seg.patch_label[p] == 1) {
+      ++pieces;
+      band_faces += seg.patch_faces[p].size();
+      EXPECT_EQ(seg.patch_part[p], int(pieces));
+    }
+  }
+  EXPECT_GE(pieces, 2u);
+  EXPECT_EQ(band_faces, raw.patch_faces[1].size()); // no face lost or taken from the caps
+}
+
+TEST(Patches, CapsAreSplitInTwo)
+{
+  // Two regions of a sphere: a cap (label 0) and the rest (label 1). Each has
+  // one neighbour all around: both are caps.
+  const Mesh& m = sphere();
+  const std::vector<int> banded = banded_labels(m, 0.3);
+  std::vector<int> labels(banded.size());
+  for(std::size_t i = 0; i < banded.size(); ++i) labels[i] = banded[i] == 0 ? 0 : 1;
+  Seg raw = diffuv::patches_from_labels(m, labels, m.points());
+  ASSERT_EQ(raw.number_of_patches(), 2u);
+  EXPECT_TRUE(diffuv::is_cap(m, raw, 0, m.points()));
+  EXPECT_TRUE(diffuv::is_cap(m, raw, 1, m.points()));
+
+  Seg seg;
+  diffuv::Patching_report report;
+  ASSERT_TRUE(diffuv::disc_patches(m, labels, m.points(), seg, diffuv::Patching_options(), &report).ok());
+  EXPECT_EQ(report.caps_split, 2u);
+  ASSERT_EQ(seg.number_of_patches(), 4u);
+  const std::vector<int> expected_labels = {0, 0, 1, 1}, expected_parts = {1, 2, 1, 2};
+  EXPECT_EQ(seg.patch_label, expected_labels);
+  EXPECT_EQ(seg.patch_part, expected_parts);
+  for(std::size_t p = 0; p < 4; ++p) {
+    EXPECT_TRUE(diffuv::check_patch_disc(m, seg, p).ok()) << p;
+    EXPECT_FALSE(diffuv::is_cap(m, seg, p, m.points())) << p;
+  }
+  EXPECT_EQ(seg.patch_faces[0].size() + seg.patch_faces[1].size(), raw.patch_faces[0].size());
+
+  // Without the split, the caps stay whole and get equal-arc corners.
+  diffuv::Patching_options keep;
+  keep.split_caps = false;
+  Seg whole;
+  ASSERT_TRUE(diffuv::disc_patches(m, labels, m.points(), whole, keep).ok());
+  EXPECT_EQ(whole.number_of_patches(), 2u);
+  diffuv::Four_sides<vertex_descriptor> sides;
+  diffuv::Side_report side_report;
+  ASSERT_TRUE(diffuv::region_sides(m, whole, 0, m.points(), sides, &side_report).ok());
+  EXPECT_TRUE(side_report.equal_arcs);
+}
+
+// Every vertex of a closed mesh gets a (patch, u, v) with u, v in [0,1].
+void expect_everything_mapped(const std::string& name)
+{
+  const Mesh& m = cgal_mesh(name);
+  Seg seg;
+  diffuv::Patching_report report;
+  ASSERT_TRUE(diffuv::disc_patches(m, {}, m.points(), seg, diffuv::Patching_options(), &report).ok()) << name;
+  EXPECT_TRUE(report.automatic);
+  EXPECT_GT(seg.number_of_patches(), 1u);
+  diffuv::Uv_atlas<Mesh> atlas(m);
+  const auto results = diffuv::parameterize_patches(m, seg, m.points(), atlas);
+  for(std::size_t p = 0; p < results.size(); ++p) ASSERT_TRUE(results[p].status.ok()) << name << " patch " << p;
+  for(auto v : vertices(m)) {
+    auto e = atlas.entries(v);
+    ASSERT_GT(e.second - e.first, 0) << name << " vertex " << v << " has no (u,v)";
+    for(auto it = e.first; it != e.second; ++it) {
+      const Point_2 uv = atlas.uv(it->chart, it->local);
+      EXPECT_TRUE(uv.x() >= 0 && uv.x() <= 1 && uv.y() >= 0 && uv.y() <= 1) << name << " vertex " << v << ": " << uv;
+    }
+  }
+}
+
+TEST(AutomaticPatches, CowManAndGenusThreeElephantAreFullyMapped)
+{
+  for(const char* name : {"cow.off", "man.off", "elephant.off"}) expect_everything_mapped(name);
+}
+
+TEST(AutomaticPatches, DeterministicAndIndependentOfVertexOrder)
+{
+  const Mesh& cow = cgal_mesh("cow.off");
+  const std::vector<face_descriptor> all(faces(cow).begin(), faces(cow).end());
+  std::vector<int> first(num_faces(cow), -1), second(num_faces(cow), -1);
+  diffuv::voronoi_discs(cow, all, cow.points(), first, 0);
+  diffuv::voronoi_discs(cow, all, cow.points(), second, 0);
+  EXPECT_EQ(first, second);
+
+  // Vertices stored in another order, faces in the same order: same partition.
+  std::vector<std::size_t> vperm(num_vertices(cow));
+  std::iota(vperm.begin(), vperm.end(), 0);
+  std::shuffle(vperm.begin(), vperm.end(), std::mt19937(5));
+  std::vector<std::size_t> vinv(vperm.size());
+  for(std::size_t i = 0; i < vperm.size(); ++i) vinv[vperm[i]] = i;
+  Mesh shuffled;
+  for(std::size_t k = 0; k < vperm.size(); ++k) shuffled.add_vertex(cow.point(vertex_descriptor(Mesh::size_type(vinv[k]))));
+  for(auto f : faces(cow)) {
+    std::vector<vertex_descriptor> fv;
+    for(auto v : vertices_around_face(cow.halfedge(f), cow)) fv.push_back(vertex_descriptor(Mesh::size_type(vperm[v.idx()])));
+    shuffled.add_face(fv);
+  }
+  std::vector<int> third(num_faces(shuffled), -1);
+  diffuv::voronoi_discs(shuffled, std::vector<face_descriptor>(faces(shuffled).begin(), faces(shuffled).end()),
+                        shuffled.points(), third, 0);
+  // Same partition up to relabelling: a one-to-one map between labels.
+  std::map<int, int> forward, backward;
+  for(std::size_t i = 0; i < first.size(); ++i) {
+    auto [it, fresh] = forward.emplace(first[i], third[i]);
+    EXPECT_EQ(it->second, third[i]) << "face " << i;
+    auto [jt, fresh2] = backward.emplace(third[i], first[i]);
+    EXPECT_EQ(jt->second, first[i]) << "face " << i;
+  }
+}
+
+TEST(Dijkstra, NearestSourceIsTheSourceThatGivesTheDistance)
+{
+  // The Voronoi origin of each vertex: running Dijkstra from that source alone
+  // gives the multi-source distance.
+  const Mesh& m = cgal_mesh("mushroom.off");
+  auto lengths = diffuv::edge_length_map(m);
+  std::vector<vertex_descriptor> sources = {vertex_descriptor(3), vertex_descriptor(400), vertex_descriptor(1500)};
+  std::vector<double> dist(num_vertices(m));
+  std::vector<std::size_t> origin(num_vertices(m), 99);
+  auto index = get(boost::vertex_index, m);
+  diffuv::Multi_source_dijkstra<Mesh> dijkstra(m);
+  ASSERT_TRUE(dijkstra.run(sources, lengths, boost::make_iterator_property_map(dist.begin(), index),
+                           boost::make_iterator_property_map(origin.begin(), index)).ok());
+  std::vector<std::vector<double>> single(3, std::vector<double>(num_vertices(m)));
+  for(std::size_t s = 0; s < 3; ++s)
+    ASSERT_TRUE(dijkstra.run(std::vector<vertex_descriptor>{sources[s]}, lengths,
+                             boost::make_iterator_property_map(single[s].begin(), index)).ok());
+  for(auto v : vertices(m)) {
+    ASSERT_LT(origin[v.idx()], 3u);
+    EXPECT_EQ(single[origin[v.idx()]][v.idx()], dist[v.idx()]) << v;
+  }
+}
+
+} // namespace
