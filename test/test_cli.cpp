@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <set>
 #include <string>
 #include <sys/wait.h>
 #include <vector>
@@ -150,8 +151,13 @@ TEST_F(Tool, BadInputGivesOneClearLineAndWritesNothing)
 
   const std::vector<Bad_case> cases = {
       {"param " + missing, "diffuv: error: " + missing + ": cannot open file"},
-      {"param " + data_path("meshes/cow.off"),
+      {"param " + data_path("meshes/cow.off") + " --corners " + data_path("selections/square_corners.selection.txt"),
        "diffuv: error: " + data_path("meshes/cow.off") + ": the mesh is closed (no boundary), not a topological disc"},
+      {"param " + (dir_ / "mesh.off").string() + "x",
+       "diffuv: error: " + (dir_ / "mesh.off").string() + "x: unknown mesh file extension \".offx\" (expected .off, .obj, .ply or .stl)"},
+      {"param " + dir_.string(), "diffuv: error: " + dir_.string() + ": is a directory, not a mesh file"},
+      {"param " + mesh + " --labels " + three,
+       "diffuv: error: " + three + ": the file has 3 labels, the mesh has 562 faces"},
       {"param " + mesh + " --corners " + three,
        "diffuv: error: " + three + ":1: exactly four corner vertices are needed (3 given)"},
       {"param " + mesh + " --corners " + five,
@@ -176,6 +182,99 @@ TEST_F(Tool, BadInputGivesOneClearLineAndWritesNothing)
   EXPECT_NE(j.err.find(junk + ":1:"), std::string::npos) << j.err;
   EXPECT_NE(j.err.find("eight"), std::string::npos) << j.err;
   EXPECT_FALSE(fs::exists(out_dir()));
+}
+
+TEST_F(Tool, NoSubcommandOrUnknownCommandOrEmptyOutput)
+{
+  const Tool_run unknown = run("bogus");
+  EXPECT_EQ(unknown.code, 2);
+  EXPECT_EQ(unknown.err, "diffuv: error: unknown command 'bogus' (commands: param, segment; see diffuv --help)\n");
+  const Tool_run empty = run("param " + data_path("meshes/nefertiti.off") + " -o ''");
+  EXPECT_EQ(empty.code, 2);
+  EXPECT_NE(empty.err.find("the output folder name is empty"), std::string::npos) << empty.err;
+  const Tool_run version = run("--version");
+  EXPECT_EQ(version.code, 0);
+  EXPECT_NE(version.out.find("diffuv"), std::string::npos);
+}
+
+TEST_F(Tool, OutputsNeverReplaceTheInput)
+{
+  fs::copy_file(data_path("meshes/nefertiti.off"), dir_ / "nefertiti.off");
+  // The mesh written as OFF stays; but an OBJ input in the output folder would be replaced.
+  const std::string obj = write("plain.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3\nf 2 4 3\n");
+  const std::string before = slurp(obj);
+  const Tool_run r = run("param " + obj + " -o " + dir_.string());
+  EXPECT_EQ(r.code, 3);
+  EXPECT_NE(r.err.find("would replace the input file"), std::string::npos) << r.err;
+  EXPECT_EQ(slurp(obj), before);
+  EXPECT_FALSE(fs::exists(dir_ / "plain.uv.csv"));
+}
+
+TEST_F(Tool, ClosedMeshesAreCutIntoPatchesAndEveryVertexIsMapped)
+{
+  const Tool_run r = run("param " + data_path("meshes/cow.off") + " -o " + out_dir().string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("patches: automatic"), std::string::npos) << r.out;
+  const auto rows = read_csv(out_dir() / "cow.uv.csv");
+  std::set<std::size_t> mapped;
+  for(std::size_t i = 1; i < rows.size(); ++i) {
+    mapped.insert(std::stoul(rows[i][0]));
+    const double u = std::stod(rows[i][2]), v = std::stod(rows[i][3]);
+    EXPECT_TRUE(u >= 0 && u <= 1 && v >= 0 && v <= 1) << rows[i][0];
+  }
+  EXPECT_EQ(mapped.size(), diffuv_test::cgal_mesh("cow.off").number_of_vertices());
+  EXPECT_GT(rows.size() - 1, mapped.size()); // patch-border vertices have a row per patch
+}
+
+TEST_F(Tool, SegmentWritesPatchesThatReadBackAsLabelsAndAsPaint)
+{
+  const Tool_run seg = run("segment " + data_path("meshes/cow.off") + " -o " + out_dir().string());
+  ASSERT_EQ(seg.code, 0) << seg.err;
+  const fs::path labels = out_dir() / "cow.patches.txt";
+  const fs::path ply = out_dir() / "cow.patches.ply";
+  ASSERT_TRUE(fs::exists(labels));
+  ASSERT_TRUE(fs::exists(ply));
+
+  // The label file as --labels: the same patches come back (same count, none cut or split).
+  const Tool_run with_labels = run("param " + data_path("meshes/cow.off") + " --labels " + labels.string() + " -o " +
+                                   (dir_ / "a").string());
+  ASSERT_EQ(with_labels.code, 0) << with_labels.err;
+  EXPECT_NE(with_labels.out.find("0 merged, 0 cut into discs, 0 caps split"), std::string::npos) << with_labels.out;
+  EXPECT_TRUE(slurp(dir_ / "a" / "cow.patches.txt") == slurp(labels));
+
+  // The coloured PLY as the mesh: its painted regions are used, same patches.
+  const Tool_run painted = run("param " + ply.string() + " -o " + (dir_ / "b").string());
+  ASSERT_EQ(painted.code, 0) << painted.err;
+  EXPECT_NE(painted.out.find("painted"), std::string::npos) << painted.out;
+  EXPECT_TRUE(slurp(dir_ / "b" / "cow.patches.patches.txt") == slurp(labels)); // output named after the PLY
+}
+
+TEST_F(Tool, StrictReportsARegionThatIsNotADisc)
+{
+  // Two labels on nefertiti: a band across the middle is fine (a disc), but a
+  // ring around one vertex makes the outside an annulus.
+  const auto& m = diffuv_test::cgal_mesh("nefertiti.off");
+  std::ostringstream labels;
+  // The faces around a vertex whose neighbours are all interior: an inner disc.
+  diffuv_test::Mesh::Vertex_index inner;
+  for(auto v : vertices(m)) {
+    bool deep = !m.is_border(v);
+    for(auto w : vertices_around_target(m.halfedge(v), m)) deep = deep && !m.is_border(w);
+    if(deep) { inner = v; break; }
+  }
+  std::set<std::size_t> ring;
+  for(auto f : faces_around_target(m.halfedge(inner), m)) ring.insert(f.idx());
+  for(auto f : faces(m)) labels << (ring.count(f.idx()) ? 1 : 0) << '\n';
+  const std::string file = write("ring.txt", labels.str());
+  const Tool_run strict = run("param " + data_path("meshes/nefertiti.off") + " --labels " + file + " --strict -o " +
+                              out_dir().string());
+  EXPECT_EQ(strict.code, 1) << strict.out;
+  EXPECT_NE(strict.err.find(file + ": the mesh has several boundary loops"), std::string::npos) << strict.err;
+  EXPECT_FALSE(fs::exists(out_dir()));
+  const Tool_run repaired = run("param " + data_path("meshes/nefertiti.off") + " --labels " + file + " -o " +
+                                out_dir().string());
+  EXPECT_EQ(repaired.code, 0) << repaired.err;
+  EXPECT_NE(repaired.out.find("1 cut into discs"), std::string::npos) << repaired.out;
 }
 
 TEST_F(Tool, AnOutputPathThatIsAFileIsRefused)

@@ -15,6 +15,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -225,6 +226,12 @@ void expect_same_as_file(const std::string& file, const File_soup& soup)
     if(!same_cycle(face_vertex_numbers(mesh, f), soup.faces[j++]))
       ++wrong_faces;
   EXPECT_EQ(wrong_faces, 0u) << file;
+
+  // Nothing triangulated: face j comes from polygon j.
+  std::vector<std::size_t> identity(soup.faces.size());
+  for(std::size_t k = 0; k < identity.size(); ++k)
+    identity[k] = k;
+  EXPECT_EQ(report.file_face, identity) << file;
 }
 
 // ---------------------------------------------------------------------------
@@ -307,7 +314,9 @@ TEST_F(IoReadMesh, MissingDirectoryOrEmptyFile)
   EXPECT_EQ(e.line(), 0u);
 
   fs::create_directory(path("folder.off"));
-  EXPECT_EQ(read_error(path("folder.off")).reason(), "cannot open file");
+  EXPECT_EQ(read_error(path("folder.off")).reason(), "is a directory, not a mesh file");
+  fs::create_directory(path("folder"));
+  EXPECT_EQ(read_error(path("folder")).reason(), "is a directory, not a mesh file");
 
   e = read_error(write("empty.obj", ""));
   EXPECT_EQ(e.reason(), "the file is empty");
@@ -521,6 +530,54 @@ TEST_F(IoReadMesh, PolygonsAreTriangulated)
   EXPECT_EQ(num_vertices(mesh), 8u);
   EXPECT_EQ(mesh.point(vertex_descriptor(7)), Point_3(2, 2, 0.1));
   EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
+}
+
+// Checks report.file_face against the polygons of the file: every face's
+// corners are corners of its polygon, and a polygon of k vertices gives k - 2
+// triangles.
+void expect_faces_come_from(const Mesh& mesh, const diffuv::Mesh_read_report& report,
+                            const std::vector<std::vector<std::size_t>>& polygons)
+{
+  ASSERT_EQ(report.file_face.size(), num_faces(mesh));
+  std::vector<std::size_t> triangles(polygons.size(), 0);
+  std::size_t f = 0;
+  for(face_descriptor face : faces(mesh)) {
+    const std::size_t j = report.file_face[f++];
+    ASSERT_LT(j, polygons.size());
+    ++triangles[j];
+    for(std::size_t v : face_vertex_numbers(mesh, face))
+      EXPECT_NE(std::find(polygons[j].begin(), polygons[j].end(), v), polygons[j].end())
+        << "face " << f - 1 << " has vertex " << v << ", not a corner of polygon " << j;
+  }
+  for(std::size_t j = 0; j < polygons.size(); ++j)
+    EXPECT_EQ(triangles[j], polygons[j].size() - 2) << "polygon " << j;
+}
+
+TEST_F(IoReadMesh, TrianglesKnowTheirPolygon)
+{
+  // A quad (split by one diagonal), a pentagon (CGAL's CDT: the face is
+  // removed and the hole filled), a triangle, a hexagon, from left to right.
+  const std::string content = "OFF\n14 4 0\n"
+                              "0 0 0\n1 0 0\n1 1 0\n0 1 0\n"            // 0-3
+                              "2 0 0\n2 1 0\n1.5 1.5 0\n"               // 4-6
+                              "3 0 0\n"                                 // 7
+                              "4 0 0\n5 0 0\n5.5 0.5 0\n5 1 0\n4 1 0\n3.5 0.5 0\n" // 8-13
+                              "4 0 1 2 3\n5 1 4 5 6 2\n3 4 7 5\n6 8 9 10 11 12 13\n";
+  const std::vector<std::vector<std::size_t>> polygons = {
+    {0, 1, 2, 3}, {1, 4, 5, 6, 2}, {4, 7, 5}, {8, 9, 10, 11, 12, 13}};
+  Mesh mesh;
+  const diffuv::Mesh_read_report report = diffuv::read_triangle_mesh(write("mixed.off", content), mesh);
+  EXPECT_EQ(report.faces, 2u + 3u + 1u + 4u);
+  expect_faces_come_from(mesh, report, polygons);
+  // The appended triangles come after the file's faces.
+  EXPECT_EQ(report.file_face[2], 2u);
+
+  // A quad on a line: CGAL refuses it, the fan cut by Euler::split_face().
+  const std::string flat = "OFF\n8 3 0\n0 0 0\n1 0 0\n2 0 0\n3 0 0\n0 5 0\n1 5 0\n2 5 0\n0 6 0\n"
+                           "3 4 5 6\n4 0 1 2 3\n3 4 6 7\n";
+  const diffuv::Mesh_read_report flat_report = diffuv::read_triangle_mesh(write("flat.off", flat), mesh);
+  expect_faces_come_from(mesh, flat_report, {{4, 5, 6}, {0, 1, 2, 3}, {4, 6, 7}});
+  EXPECT_EQ(flat_report.file_face, (std::vector<std::size_t>{0, 1, 2, 1}));
 }
 
 TEST_F(IoReadMesh, DegeneratePolygonsAreKeptAndCounted)

@@ -16,11 +16,17 @@
 #include <diffuv/graph/multi_source_dijkstra.h>
 #include <diffuv/patches/disc_topology.h>
 #include <diffuv/patches/four_sides.h>
+#include <diffuv/patches/segmentation.h>
+#include <diffuv/patches/region_sides.h>
+#include <diffuv/patches/split_patches.h>
+#include <diffuv/patches/disc_patches.h>
 #include <diffuv/parameterization/diffusion_coordinates.h>
 #include <diffuv/parameterization/parameterize_disc.h>
+#include <diffuv/parameterization/parameterize_patches.h>
 #include <diffuv/atlas/Uv_atlas.h>
 #include <diffuv/metrics/distortion.h>
 #include <diffuv/io/atomic_file.h>
+#include <diffuv/io/labels.h>
 #include <diffuv/io/read_mesh.h>
 #include <diffuv/io/selection_file.h>
 #include <diffuv/io/write_obj.h>

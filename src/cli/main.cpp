@@ -4,6 +4,7 @@
 
 #include <diffuv/error.h>
 
+#include <cstring>
 #include <exception>
 #include <iostream>
 
@@ -12,17 +13,27 @@ int main(int argc, char** argv)
   CLI::App app{"diffuv: diffusion-based surface parameterization (CGAL)\n"
                "Each vertex of a disc patch gets u = d_u1/(d_u1+d_u2), v = d_v1/(d_v1+d_v2) from its\n"
                "graph distances to the four sides of the patch."};
+  app.set_version_flag("--version", "diffuv 0.1.0");
   app.require_subcommand(1);
   diffuv_cli::add_param_command(app);
+  diffuv_cli::add_segment_command(app);
+
+  // CLI11 reports an unknown command as a missing one; say what it is.
+  if(argc > 1 && argv[1][0] != '-') {
+    bool known = false;
+    for(const CLI::App* sub : app.get_subcommands({})) known = known || sub->get_name() == argv[1];
+    if(!known) {
+      std::cerr << "diffuv: error: unknown command '" << argv[1] << "' (commands: param, segment; see diffuv --help)\n";
+      return diffuv_cli::exit_usage;
+    }
+  }
 
   try {
     app.parse(argc, argv);
-  } catch(const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch(const CLI::CallForAllHelp& e) {
+  } catch(const CLI::Success& e) { // --help, --version
     return app.exit(e);
   } catch(const CLI::ParseError& e) {
-    std::cerr << "diffuv: " << e.what() << "\n(run 'diffuv --help' or 'diffuv param --help')\n";
+    std::cerr << "diffuv: error: " << e.what() << " (see diffuv --help)\n";
     return diffuv_cli::exit_usage;
   } catch(const diffuv::Input_error& e) {
     std::cerr << "diffuv: error: " << e.what() << '\n';

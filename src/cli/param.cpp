@@ -1,24 +1,21 @@
-// diffuv tool: `diffuv param` — parameterize a disc mesh and write its uv-map.
+// diffuv tool: `diffuv param` — parameterize a mesh patch by patch and write its uv-map.
 #include "commands.h"
+#include "inputs.h"
 
 #include <diffuv/atlas/Uv_atlas.h>
-#include <diffuv/error.h>
 #include <diffuv/io/atomic_file.h>
-#include <diffuv/io/read_mesh.h>
 #include <diffuv/io/selection_file.h>
 #include <diffuv/io/write_obj.h>
 #include <diffuv/io/write_uv_table.h>
 #include <diffuv/metrics/distortion.h>
 #include <diffuv/parameterization/parameterize_disc.h>
+#include <diffuv/parameterization/parameterize_patches.h>
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Surface_mesh.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <cstdlib>
-#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -27,26 +24,26 @@
 namespace diffuv_cli {
 namespace {
 
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Mesh = CGAL::Surface_mesh<Kernel::Point_3>;
 using vertex_descriptor = Mesh::Vertex_index;
+using Atlas = diffuv::Uv_atlas<Mesh>;
 
 struct Param_options {
   std::string mesh;
   std::string corners;
   std::string output = "diffuv-out";
   int runs = 1;
+  Patch_cli_options patches;
 };
 
-// CGAL's data set extracted by the build, or $DIFFUV_DATA_DIR.
-std::string default_mesh()
-{
-  const char* env = std::getenv("DIFFUV_DATA_DIR");
-  const std::string dir = env ? env : DIFFUV_DEFAULT_DATA_DIR;
-  return dir + "/meshes/mushroom.off";
-}
+// One parameterization of the whole mesh: its patches and its atlas.
+struct Parameterization {
+  std::unique_ptr<Atlas> atlas;
+  diffuv::Segmentation<Mesh> seg;
+  diffuv::Patching_report patching;
+  std::vector<diffuv::Patch_result<Mesh>> patches;
+  double milliseconds = 0;
+};
 
-// Statuses about corners are the corner file's fault when there is one.
 bool is_corner_problem(diffuv::Status_code code)
 {
   switch(code) {
@@ -60,74 +57,166 @@ bool is_corner_problem(diffuv::Status_code code)
   }
 }
 
+// A disc mesh with four given corners: one chart.
+Parameterization parameterize_with_corners(const Input_mesh& in, const std::vector<vertex_descriptor>& corners,
+                                           const std::string& corner_file)
+{
+  Parameterization result;
+  result.atlas = std::make_unique<Atlas>(in.mesh);
+  diffuv::Patch_result<Mesh> patch;
+  const auto start = std::chrono::steady_clock::now();
+  patch.status = diffuv::parameterize_disc(in.mesh, corners, *result.atlas, &patch.sides);
+  result.milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  if(!patch.status) {
+    if(is_corner_problem(patch.status.code)) {
+      std::string what = patch.status.what();
+      if(patch.status.code == diffuv::Status_code::corner_not_on_border ||
+         patch.status.code == diffuv::Status_code::corner_duplicated) {
+        what += ": vertices"; // name the vertices, not only their places in the list
+        for(auto c : corners) what += " " + std::to_string(c.idx());
+      }
+      throw diffuv::Input_error(corner_file, 1, what);
+    }
+    throw diffuv::Input_error(in.path, 0, patch.status.what());
+  }
+  patch.chart = 0;
+  patch.milliseconds = result.milliseconds;
+  result.seg.face_patch.assign(num_faces(in.mesh), 0);
+  result.seg.patch_label = {0};
+  result.seg.patch_part = {0};
+  result.seg.patch_faces = {std::vector<Mesh::Face_index>(faces(in.mesh).begin(), faces(in.mesh).end())};
+  result.patches.push_back(patch);
+  return result;
+}
+
+// Any mesh: disc patches (from labels, or automatic), each mapped on its own.
+Parameterization parameterize_by_patches(const Input_mesh& in, const Patch_cli_options& options)
+{
+  Parameterization result;
+  result.atlas = std::make_unique<Atlas>(in.mesh);
+  const auto start = std::chrono::steady_clock::now();
+  result.seg = make_patches(in, options, result.patching);
+  result.patches = diffuv::parameterize_patches(in.mesh, result.seg, in.mesh.points(), *result.atlas);
+  result.milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+std::string corner_rule(const diffuv::Side_report& r)
+{
+  if(r.equal_arcs) return "arcs";
+  std::string s = std::to_string(r.runs) + " runs";
+  if(r.merged) s += " -" + std::to_string(r.merged);
+  if(r.split) s += " +" + std::to_string(r.split);
+  return s;
+}
+
+void print_row(const std::string& name, const std::string& label, std::size_t vertices, std::size_t faces,
+               const std::string& corners, double ms, const diffuv::Distortion_summary& d)
+{
+  std::printf("%-6s %6s %8zu %8zu %-10s %8.2f %7zu %5zu %8zu %9.4f %9.4g %9.4f %9.4g %8.4g %9s\n", name.c_str(),
+              label.c_str(), vertices, faces, corners.c_str(), ms, d.flipped, d.degenerate, d.overlapping_pairs,
+              d.angle_mean, d.angle_max, d.area_mean, d.area_max, d.stretch_l2, d.injective() ? "yes" : "no");
+}
+
 void run_param(const Param_options& options)
 {
-  const std::string mesh_path = options.mesh.empty() ? default_mesh() : options.mesh;
-  Mesh mesh;
-  const diffuv::Mesh_read_report report = diffuv::read_triangle_mesh(mesh_path, mesh);
+  if(!options.corners.empty() && (!options.patches.labels.empty()))
+    throw CLI::ValidationError("--corners", "applies to a disc mesh without --labels");
+  const std::string mesh_path = options.mesh.empty() ? default_mesh("mushroom.off") : options.mesh;
+  const Input_mesh in = read_input(mesh_path, options.patches);
 
   std::vector<vertex_descriptor> corners;
   if(!options.corners.empty())
-    corners = diffuv::selection_vertices(mesh, diffuv::read_selection_file(options.corners), options.corners);
+    corners = diffuv::selection_vertices(in.mesh, diffuv::read_selection_file(options.corners), options.corners);
 
-  // Everything is checked and computed before anything is written.
-  // --runs repeats the whole parameterization (disc check, sides, four
-  // Dijkstra runs, atlas with kd-tree) and reports the median time.
-  std::unique_ptr<diffuv::Uv_atlas<Mesh>> result;
-  diffuv::Four_sides<vertex_descriptor> sides;
-  diffuv::Status status;
+  // --runs repeats everything after reading and reports the median time.
+  Parameterization result;
   std::vector<double> times;
-  for(int run = 0; run < options.runs && status.ok(); ++run) {
-    auto atlas = std::make_unique<diffuv::Uv_atlas<Mesh>>(mesh);
-    const auto start = std::chrono::steady_clock::now();
-    status = diffuv::parameterize_disc(mesh, corners, *atlas, &sides);
-    times.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
-    result = std::move(atlas);
+  for(int run = 0; run < options.runs; ++run) {
+    result = options.corners.empty() ? parameterize_by_patches(in, options.patches)
+                                     : parameterize_with_corners(in, corners, options.corners);
+    times.push_back(result.milliseconds);
   }
   std::sort(times.begin(), times.end());
-  const double ms = times[times.size() / 2];
-  if(!status) {
-    if(!options.corners.empty() && is_corner_problem(status.code)) {
-      std::string what = status.what();
-      if(status.code == diffuv::Status_code::corner_not_on_border || status.code == diffuv::Status_code::corner_duplicated) {
-        // Name the vertices, not only their positions in the file.
-        what += ": vertices";
-        for(auto c : corners) what += " " + std::to_string(c.idx());
-      }
-      throw diffuv::Input_error(options.corners, 1, what);
-    }
-    throw diffuv::Input_error(mesh_path, 0, status.what());
+  const double total_ms = times[times.size() / 2];
+  const Atlas& atlas = *result.atlas;
+
+  // Everything is computed before anything is written: all files or none.
+  const std::vector<std::string> inputs = {in.path, options.corners, options.patches.labels};
+  diffuv::Output_folder out(options.output, inputs);
+  diffuv::write_obj(out.open(output_name(in.path, ".obj")), in.mesh, in.mesh.points(), atlas.corner_uv_map());
+  diffuv::write_uv_table(out.open(output_name(in.path, ".uv.csv")), atlas);
+  std::ostream& patch_file = out.open(output_name(in.path, ".patches.txt"));
+  for(auto f : faces(in.mesh)) patch_file << result.seg.face_patch[f.idx()] << '\n';
+  out.commit();
+
+  // The summary.
+  std::cout << "diffuv param " << in.path << ": " << in.report.vertices << " vertices, " << num_faces(in.mesh) << " faces";
+  if(in.report.polygons_triangulated > 0) std::cout << " (" << in.report.polygons_triangulated << " polygons triangulated)";
+  if(in.report.degenerate_faces > 0) std::cout << ", " << in.report.degenerate_faces << " zero-area faces";
+  std::cout << '\n';
+  if(!options.corners.empty()) {
+    const auto& c = result.patches.front().sides.corners;
+    std::cout << "corners (0,0) (1,0) (1,1) (0,1): vertices " << c[0].idx() << ' ' << c[1].idx() << ' ' << c[2].idx()
+              << ' ' << c[3].idx() << " (from " << options.corners << ")\n";
+  } else {
+    const auto& r = result.patching;
+    std::cout << result.seg.number_of_patches() << " patches: "
+              << (!in.label_source.empty() ? in.label_source
+                                           : r.automatic ? "automatic (" + std::to_string(options.patches.patches) + " seeds to start)"
+                                                         : "the whole disc")
+              << "; " << r.merged << " merged, " << r.cut << " cut into discs, " << r.caps_split << " caps split\n";
   }
+  std::printf("%-6s %6s %8s %8s %-10s %8s %7s %5s %8s %9s %9s %9s %9s %8s %9s\n", "patch", "label", "vertices", "faces",
+              "corners", "time_ms", "flipped", "degen", "overlaps", "angle_avg", "angle_max", "area_avg", "area_max",
+              "L2", "injective");
 
-  const diffuv::Uv_atlas<Mesh>& atlas = *result;
-  const auto& chart = atlas.chart(0);
-  const diffuv::Distortion_summary d =
-      diffuv::measure_distortion(mesh, chart.faces, mesh.points(), atlas.chart_uv_map(0));
-
-  const std::string stem = std::filesystem::path(mesh_path).stem().string();
-  const std::string obj_path = (std::filesystem::path(options.output) / (stem + ".obj")).string();
-  const std::string csv_path = (std::filesystem::path(options.output) / (stem + ".uv.csv")).string();
-  diffuv::ensure_output_directory(options.output);
-  diffuv::write_obj(obj_path, mesh, mesh.points(), atlas.corner_uv_map());
-  diffuv::write_uv_table(csv_path, atlas);
-
-  std::cout << "diffuv param " << mesh_path << ": " << report.vertices << " vertices, " << num_faces(mesh) << " faces";
-  if(report.polygons_triangulated > 0) std::cout << " (" << report.polygons_triangulated << " polygons triangulated)";
-  std::cout << "\ncorners (0,0) (1,0) (1,1) (0,1): vertices " << sides.corners[0].idx() << ' ' << sides.corners[1].idx()
-            << ' ' << sides.corners[2].idx() << ' ' << sides.corners[3].idx()
-            << (options.corners.empty() ? " (automatic: equal arcs)" : " (from " + options.corners + ")") << '\n';
-  std::printf("%-6s %8s %8s %8s %7s %5s %8s %9s %9s %9s %9s %8s %9s %9s\n", "patch", "vertices", "faces",
-              "time_ms", "flipped", "degen", "overlaps", "angle_avg", "angle_max", "area_avg", "area_max", "L2",
-              "Linf", "injective");
-  auto row = [&](const char* name) {
-    std::printf("%-6s %8zu %8zu %8.2f %7zu %5zu %8zu %9.4f %9.4g %9.4f %9.4g %8.4g %9.4g %9s\n", name,
-                chart.vertices.size(), chart.faces.size(), ms, d.flipped, d.degenerate, d.overlapping_pairs,
-                d.angle_mean, d.angle_max, d.area_mean, d.area_max, d.stretch_l2, d.stretch_linf,
-                d.injective() ? "yes" : "no");
-  };
-  row("0");
-  row("total");
-  std::cout << "wrote " << obj_path << " and " << csv_path << '\n';
+  diffuv::Distortion_summary total;
+  double area_sum = 0, angle_sum = 0, areadist_sum = 0, l2_sum = 0, patch_ms = 0;
+  std::size_t vertex_entries = 0, failed = 0;
+  for(std::size_t p = 0; p < result.patches.size(); ++p) {
+    const auto& r = result.patches[p];
+    const std::string label = std::to_string(result.seg.patch_label[p]) +
+                              (result.seg.patch_part[p] ? "." + std::to_string(result.seg.patch_part[p]) : "");
+    if(!r.status) {
+      ++failed;
+      std::printf("%-6zu %6s %8s %8zu  failed: %s\n", p, label.c_str(), "-", result.seg.patch_faces[p].size(),
+                  r.status.what().c_str());
+      continue;
+    }
+    const auto& chart = atlas.chart(r.chart);
+    const auto d = diffuv::measure_distortion(in.mesh, chart.faces, in.mesh.points(), atlas.chart_uv_map(r.chart));
+    print_row(std::to_string(p), label, chart.vertices.size(), chart.faces.size(), corner_rule(r.side_report),
+              r.milliseconds, d);
+    double area = 0;
+    for(auto f : chart.faces) area += CGAL::Polygon_mesh_processing::face_area(f, in.mesh);
+    vertex_entries += chart.vertices.size();
+    total.faces += d.faces;
+    total.flipped += d.flipped;
+    total.degenerate += d.degenerate;
+    total.overlapping_pairs += d.overlapping_pairs;
+    total.angle_max = std::max(total.angle_max, d.angle_max);
+    total.area_max = std::max(total.area_max, d.area_max);
+    area_sum += area;
+    angle_sum += d.angle_mean * area;
+    areadist_sum += d.area_mean * area;
+    l2_sum += d.stretch_l2 * d.stretch_l2 * area;
+    patch_ms += r.milliseconds;
+  }
+  if(area_sum > 0) {
+    total.angle_mean = angle_sum / area_sum;
+    total.area_mean = areadist_sum / area_sum;
+    total.stretch_l2 = std::sqrt(l2_sum / area_sum);
+  }
+  print_row("total", "", vertex_entries, total.faces, "", total_ms, total);
+  if(failed > 0) std::cout << failed << " patch(es) failed and have no (u,v): see above\n";
+  std::cout << "time: " << total_ms << " ms in all (median of " << options.runs << "), of which "
+            << patch_ms << " ms mapping the patches\n";
+  std::cout << "wrote";
+  for(const auto& p : out.paths()) std::cout << ' ' << p;
+  std::cout << '\n';
+  if(failed > 0 && options.patches.strict)
+    throw diffuv::Input_error(in.path, 0, std::to_string(failed) + " patch(es) could not be parameterized");
 }
 
 } // namespace
@@ -135,19 +224,27 @@ void run_param(const Param_options& options)
 void add_param_command(CLI::App& app)
 {
   auto options = std::make_shared<Param_options>();
-  CLI::App* cmd = app.add_subcommand("param", "Parameterize a disc mesh onto the unit square; write OBJ (with vt) and a uv table");
+  CLI::App* cmd = app.add_subcommand(
+      "param", "Parameterize a mesh patch by patch, each onto the unit square; write OBJ (vt per corner), a uv table "
+               "and the patches");
   cmd->add_option("mesh", options->mesh,
-                  "Triangle mesh (OFF, OBJ, PLY, STL), a topological disc. Default: CGAL's mushroom.off");
+                  "Triangle mesh (OFF, OBJ, PLY, STL). A disc is one patch; any other mesh is cut into disc patches. "
+                  "Default: CGAL's mushroom.off");
   cmd->add_option("--corners", options->corners,
-                  "CGAL *.selection.txt: four boundary vertex indices on its first line. The first goes to (0,0), "
-                  "the others follow counter-clockwise along the boundary to (1,0), (1,1), (0,1). "
+                  "Disc mesh only: CGAL *.selection.txt with four boundary vertex indices on its first line. The first "
+                  "goes to (0,0), the others follow counter-clockwise along the boundary to (1,0), (1,1), (0,1). "
                   "Default: automatic (the sharpest boundary vertex, then equal arc lengths)");
-  cmd->add_option("-o,--output", options->output, "Output folder (created if needed)")->capture_default_str();
+  add_patch_options(cmd, options->patches);
+  cmd->add_option("-o,--output", options->output, "Output folder (created if needed)")
+      ->check(CLI::Validator([](const std::string& s) { return s.empty() ? "the output folder name is empty" : ""; },
+                             "DIR"))
+      ->capture_default_str();
   cmd->add_option("--runs", options->runs, "Run the parameterization N times and report the median time")
       ->check(CLI::Range(1, 1000))
       ->capture_default_str();
-  cmd->footer("Writes OUTPUT/<mesh>.obj (v in input order, vt per corner) and OUTPUT/<mesh>.uv.csv "
-              "(vertex,patch,u,v).\nExit codes: 0 ok, 1 bad input, 2 bad command line, 3 cannot write.");
+  cmd->footer("Writes OUTPUT/<mesh>.obj (v in input order, one vt per (vertex, patch)), OUTPUT/<mesh>.uv.csv "
+              "(vertex,patch,u,v) and OUTPUT/<mesh>.patches.txt (the patch of each face, one per line).\n"
+              "Exit codes: 0 ok, 1 bad input, 2 bad command line, 3 cannot write, 4 internal error.");
   cmd->callback([options]() { run_param(*options); });
 }
 

@@ -63,6 +63,11 @@ struct Mesh_read_report {
   std::size_t faces = 0;                 ///< triangles of the mesh
   std::size_t degenerate_faces = 0;      ///< triangles of zero area (collinear or coinciding corners)
   std::size_t isolated_vertices = 0;     ///< points used by no face, kept so that indices stay those of the file
+  /// The polygon of the file each face comes from: `faces` entries, one per
+  /// face of the mesh in the order of `faces(mesh)`. The triangles cut from a
+  /// polygon all map to it, so per-polygon data of the file (labels, colours)
+  /// can be carried to the triangles.
+  std::vector<std::size_t> file_face;
 };
 
 namespace internal {
@@ -545,6 +550,20 @@ inline std::string describe_non_manifold(const std::vector<std::vector<std::size
   return std::string();
 }
 
+/// Gives each triangle cut from a polygon the polygon's number, through
+/// `CGAL::Polygon_mesh_processing::triangulate_face()`'s visitor (which is
+/// copied, hence the pointers).
+template <class TriangleMesh, class PolygonMap>
+struct Polygon_provenance_visitor {
+  using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
+  PolygonMap* polygon_of;
+  const std::size_t* polygon;
+
+  void before_subface_creations(face_descriptor) {}
+  void after_subface_created(face_descriptor f) { put(*polygon_of, f, *polygon); }
+  void after_subface_creations() {}
+};
+
 } // namespace internal
 
 /// Reads a polygon mesh file (OFF, OBJ, PLY or STL, by extension, in any
@@ -563,7 +582,8 @@ inline std::string describe_non_manifold(const std::vector<std::vector<std::size
 ///   with `CGAL::Polygon_mesh_processing::triangulate_face()`, or, when that
 ///   fails on a degenerate polygon, into a fan from one corner. No vertex is
 ///   added; the first triangle keeps the polygon's face descriptor and the
-///   others are appended at the end of `faces(mesh)`;
+///   others are appended at the end of `faces(mesh)`; `file_face` in the
+///   report gives the polygon of every face;
 /// - zero-area triangles are kept and counted: a caller that cannot use
 ///   them decides.
 ///
@@ -603,6 +623,9 @@ Mesh_read_report read_triangle_mesh(const std::string& path, TriangleMesh& mesh)
   using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
   using Polygon = std::vector<std::size_t>;
 
+  std::error_code dir_ec;
+  if(fs::is_directory(path, dir_ec))
+    throw Input_error(path, 0, "is a directory, not a mesh file");
   const internal::Mesh_format format = internal::mesh_format(path);
   const std::string name = internal::format_name(format);
 
@@ -698,16 +721,27 @@ Mesh_read_report read_triangle_mesh(const std::string& path, TriangleMesh& mesh)
   report.faces_in_file = polygons.size();
   report.isolated_vertices = static_cast<std::size_t>(std::count(used.begin(), used.end(), false));
 
+  // The polygon of each face. Triangulating a polygon of more than four
+  // vertices removes its face and fills the hole, so the provenance is
+  // tracked through face descriptors, not positions.
+  auto polygon_of = get(CGAL::dynamic_face_property_t<std::size_t>(), mesh);
+  for(std::size_t j = 0; j < polygons.size(); ++j)
+    put(polygon_of, face_of[j], j);
+  std::size_t current_polygon = 0;
+  const internal::Polygon_provenance_visitor<TriangleMesh, decltype(polygon_of)> provenance{&polygon_of,
+                                                                                          &current_polygon};
+
   for(std::size_t j = 0; j < polygons.size(); ++j) {
     if(polygons[j].size() == 3)
       continue;
     const face_descriptor f = face_of[j];
-    if(!PMP::triangulate_face(f, mesh)) {
+    current_polygon = j;
+    if(!PMP::triangulate_face(f, mesh, CGAL::parameters::visitor(provenance))) {
       // triangulate_face() gives up on a polygon without a normal (collinear
       // or coinciding corners) before changing anything: cut a fan instead.
       const halfedge_descriptor h = halfedge(f, mesh);
       while(next(next(next(h, mesh), mesh), mesh) != h)
-        CGAL::Euler::split_face(h, next(next(h, mesh), mesh), mesh);
+        put(polygon_of, face(opposite(CGAL::Euler::split_face(h, next(next(h, mesh), mesh), mesh), mesh), mesh), j);
     }
     ++report.polygons_triangulated;
 
@@ -741,6 +775,9 @@ Mesh_read_report read_triangle_mesh(const std::string& path, TriangleMesh& mesh)
   }
 
   report.faces = static_cast<std::size_t>(num_faces(mesh));
+  report.file_face.reserve(report.faces);
+  for(face_descriptor f : faces(mesh))
+    report.file_face.push_back(get(polygon_of, f));
   for(face_descriptor f : faces(mesh))
     if(PMP::is_degenerate_triangle_face(f, mesh))
       ++report.degenerate_faces;

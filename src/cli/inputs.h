@@ -1,0 +1,113 @@
+// diffuv tool: what `param` and `segment` share — reading a mesh and its
+// regions, and cutting it into disc patches.
+#ifndef DIFFUV_CLI_INPUTS_H
+#define DIFFUV_CLI_INPUTS_H
+
+#include <diffuv/error.h>
+#include <diffuv/io/labels.h>
+#include <diffuv/io/read_mesh.h>
+#include <diffuv/patches/disc_patches.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <CLI/CLI.hpp>
+
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+namespace diffuv_cli {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Mesh = CGAL::Surface_mesh<Kernel::Point_3>;
+
+/// A mesh as read, with its regions if it has any.
+struct Input_mesh {
+  std::string path;
+  Mesh mesh;
+  diffuv::Mesh_read_report report;
+  std::vector<int> face_labels;  ///< #F entries, or empty: no regions
+  std::string label_source;      ///< where the labels came from, for the summary
+  std::string labels_path;       ///< the label file, if one was given
+};
+
+/// Options that shape the patches, shared by `param` and `segment`.
+struct Patch_cli_options {
+  std::string labels;
+  std::size_t patches = 12;
+  bool no_split_caps = false;
+  bool strict = false;
+};
+
+/// CGAL's data set extracted by the build, or $DIFFUV_DATA_DIR.
+inline std::string default_mesh(const std::string& name)
+{
+  const char* env = std::getenv("DIFFUV_DATA_DIR");
+  return std::string(env ? env : DIFFUV_DEFAULT_DATA_DIR) + "/meshes/" + name;
+}
+
+inline void add_patch_options(CLI::App* cmd, Patch_cli_options& o)
+{
+  cmd->add_option("--labels", o.labels,
+                  "Region label file: one integer per face of the mesh file (file order). Each connected region is a "
+                  "patch; the borders between regions are the sides. Default: the colours or integer face property "
+                  "painted in a PLY/OFF mesh, else automatic patches for a mesh that is not a disc");
+  cmd->add_option("--patches", o.patches,
+                  "Automatic patches: how many to start from (more are added until every patch is a disc)")
+      ->check(CLI::Range(1, 10000))
+      ->capture_default_str();
+  cmd->add_flag("--no-split-caps", o.no_split_caps,
+                "Keep caps (patches with one neighbour all around, like a hand or an ear) whole instead of splitting "
+                "them in two");
+  cmd->add_flag("--strict", o.strict, "Report a region that is not a disc instead of cutting it into discs");
+}
+
+/// Reads the mesh and its regions: `--labels` first, else painted colours or
+/// integer face properties of the mesh file.
+inline Input_mesh read_input(const std::string& path, const Patch_cli_options& o)
+{
+  Input_mesh in;
+  in.path = path;
+  in.report = diffuv::read_triangle_mesh(path, in.mesh);
+  std::vector<int> polygon_labels;
+  if(!o.labels.empty()) {
+    polygon_labels = diffuv::read_face_labels(o.labels, in.report.faces_in_file);
+    in.label_source = "labels from " + o.labels;
+    in.labels_path = o.labels;
+  } else {
+    diffuv::Painted_labels painted = diffuv::read_painted_labels(path);
+    if(painted.source != diffuv::Label_source::none) {
+      polygon_labels = std::move(painted.polygon_labels);
+      in.label_source = "regions painted in the mesh file (" + painted.property + ")";
+    }
+  }
+  if(!polygon_labels.empty()) in.face_labels = diffuv::face_labels_of_mesh(polygon_labels, in.report);
+  return in;
+}
+
+/// Cuts the mesh into disc patches (see `diffuv::disc_patches()`).
+/// \throws diffuv::Input_error with `--strict` if a region is not a disc
+inline diffuv::Segmentation<Mesh> make_patches(const Input_mesh& in, const Patch_cli_options& o,
+                                               diffuv::Patching_report& report)
+{
+  diffuv::Patching_options options;
+  options.split_caps = !o.no_split_caps;
+  options.strict = o.strict;
+  options.automatic.patches = o.patches;
+  diffuv::Segmentation<Mesh> seg;
+  const diffuv::Status status = diffuv::disc_patches(in.mesh, in.face_labels, in.mesh.points(), seg, options, &report);
+  if(!status && o.strict)
+    throw diffuv::Input_error(in.labels_path.empty() ? in.path : in.labels_path, 0, status.what());
+  return seg;
+}
+
+/// The name of an output file: the mesh file's stem and an ending.
+inline std::string output_name(const std::string& mesh_path, const std::string& ending)
+{
+  return std::filesystem::path(mesh_path).stem().string() + ending;
+}
+
+} // namespace diffuv_cli
+
+#endif

@@ -1,0 +1,73 @@
+// diffuv tool: `diffuv segment` — cut a mesh into disc patches and write them
+// as a label file and a PLY with face colours, to inspect or repaint.
+#include "commands.h"
+#include "inputs.h"
+
+#include <diffuv/io/atomic_file.h>
+#include <diffuv/io/labels.h>
+
+#include <iostream>
+#include <memory>
+#include <string>
+
+namespace diffuv_cli {
+namespace {
+
+struct Segment_options {
+  std::string mesh;
+  std::string output = "diffuv-out";
+  Patch_cli_options patches;
+};
+
+void run_segment(const Segment_options& options)
+{
+  const std::string mesh_path = options.mesh.empty() ? default_mesh("cow.off") : options.mesh;
+  const Input_mesh in = read_input(mesh_path, options.patches);
+  diffuv::Patching_report report;
+  const diffuv::Segmentation<Mesh> seg = make_patches(in, options.patches, report);
+
+  std::vector<int> face_patch(num_faces(in.mesh));
+  for(auto f : faces(in.mesh)) face_patch[f.idx()] = static_cast<int>(seg.face_patch[f.idx()]);
+
+  diffuv::Output_folder out(options.output, {in.path, options.patches.labels});
+  std::ostream& labels = out.open(output_name(in.path, ".patches.txt"));
+  for(int p : face_patch) labels << p << '\n';
+  diffuv::write_labelled_ply(out.open(output_name(in.path, ".patches.ply")), in.mesh, in.mesh.points(), face_patch);
+  out.commit();
+
+  std::size_t smallest = num_faces(in.mesh), largest = 0;
+  for(const auto& faces_of_patch : seg.patch_faces) {
+    smallest = std::min(smallest, faces_of_patch.size());
+    largest = std::max(largest, faces_of_patch.size());
+  }
+  std::cout << "diffuv segment " << in.path << ": " << num_vertices(in.mesh) << " vertices, " << num_faces(in.mesh)
+            << " faces\n"
+            << seg.number_of_patches() << " patches ("
+            << (!in.label_source.empty() ? in.label_source : report.automatic ? "automatic" : "the whole disc")
+            << "), " << smallest << " to " << largest << " faces each; " << report.merged << " merged, " << report.cut
+            << " cut into discs, " << report.caps_split << " caps split";
+  if(!report.not_discs.empty()) std::cout << "; " << report.not_discs.size() << " not discs";
+  std::cout << "\nwrote";
+  for(const auto& p : out.paths()) std::cout << ' ' << p;
+  std::cout << '\n';
+}
+
+} // namespace
+
+void add_segment_command(CLI::App& app)
+{
+  auto options = std::make_shared<Segment_options>();
+  CLI::App* cmd = app.add_subcommand("segment", "Cut a mesh into disc patches; write them as labels and a coloured PLY");
+  cmd->add_option("mesh", options->mesh, "Triangle mesh (OFF, OBJ, PLY, STL). Default: CGAL's cow.off");
+  add_patch_options(cmd, options->patches);
+  cmd->add_option("-o,--output", options->output, "Output folder (created if needed)")
+      ->check(CLI::Validator([](const std::string& s) { return s.empty() ? "the output folder name is empty" : ""; },
+                             "DIR"))
+      ->capture_default_str();
+  cmd->footer("Writes OUTPUT/<mesh>.patches.txt (the patch of each face, one per line: a label file for --labels) "
+              "and OUTPUT/<mesh>.patches.ply (a colour per patch, for MeshLab or Blender; repaint it and pass it "
+              "back to diffuv param).\nExit codes: 0 ok, 1 bad input, 2 bad command line, 3 cannot write, 4 internal error.");
+  cmd->callback([options]() { run_segment(*options); });
+}
+
+} // namespace diffuv_cli

@@ -1,0 +1,767 @@
+// Tests of include/diffuv/io/labels.h: label files (every rejection with its
+// exact message and line), painted regions in OFF and PLY files (CGAL's
+// coloured meshes, MeshLab- and Blender-style headers, text and binary),
+// the per-vertex rule, labels carried to triangulated polygons, and the
+// labelled PLY round trip.
+//
+// Expectations come from the files, read by eye and written here, or from
+// CGAL's readers where they read the same thing.
+#include "test_data.h"
+
+#include <diffuv/io/labels.h>
+#include <diffuv/io/read_mesh.h>
+
+#include <CGAL/IO/OFF.h>
+#include <CGAL/IO/PLY.h>
+
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+using diffuv::Label_source;
+using diffuv::Rgb;
+using diffuv_test::Mesh;
+using diffuv_test::Point_3;
+using face_descriptor = boost::graph_traits<Mesh>::face_descriptor;
+using vertex_descriptor = boost::graph_traits<Mesh>::vertex_descriptor;
+using Polygons = std::vector<std::vector<std::size_t>>;
+
+class LabelsTest : public ::testing::Test {
+protected:
+  void SetUp() override
+  {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    dir_ = fs::temp_directory_path() /
+           ("diffuv_test_labels_" + std::to_string(::getpid()) + "_" + info->test_suite_name() + "_" + info->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+
+  std::string write(const std::string& name, const std::string& content) const
+  {
+    std::ofstream out(path(name), std::ios::binary);
+    out << content;
+    return path(name);
+  }
+
+  fs::path dir_;
+};
+
+using LabelsFile = LabelsTest;
+using LabelsPainted = LabelsTest;
+using LabelsPaintedErrors = LabelsTest;
+using LabelsMesh = LabelsTest;
+using LabelsPly = LabelsTest;
+
+template <class F>
+diffuv::Input_error input_error(F f)
+{
+  try {
+    f();
+  } catch(const diffuv::Input_error& e) {
+    return e;
+  }
+  ADD_FAILURE() << "no Input_error";
+  return diffuv::Input_error("", 0, "no error");
+}
+
+template <class E, class F>
+std::string error_text(F f)
+{
+  try {
+    f();
+  } catch(const E& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "no exception";
+  return std::string();
+}
+
+diffuv::Input_error label_file_error(const std::string& file, std::size_t expected)
+{
+  return input_error([&] { diffuv::read_face_labels(file, expected); });
+}
+
+diffuv::Input_error painted_error(const std::string& file, const std::string& property = std::string())
+{
+  return input_error([&] { diffuv::read_painted_labels(file, property); });
+}
+
+// CGAL's PLY reader with face colours. A pitfall: CGAL 5.5 compiles it only
+// when vertex colours are asked for too, into the same iterator type.
+bool cgal_read_ply(const std::string& file, std::vector<Point_3>& points, Polygons& polygons,
+                   std::vector<CGAL::IO::Color>& face_colors, bool binary = true)
+{
+  std::vector<CGAL::IO::Color> vertex_colors;
+  return CGAL::IO::read_PLY(file, points, polygons,
+                            CGAL::parameters::face_color_output_iterator(std::back_inserter(face_colors))
+                              .vertex_color_output_iterator(std::back_inserter(vertex_colors))
+                              .use_binary_mode(binary)
+                              .verbose(false));
+}
+
+// The vertex numbers of face f.
+std::vector<std::size_t> corners(const Mesh& mesh, face_descriptor f)
+{
+  std::vector<std::size_t> numbers;
+  for(vertex_descriptor v : CGAL::vertices_around_face(halfedge(f, mesh), mesh))
+    numbers.push_back(std::size_t(v));
+  return numbers;
+}
+
+// The polygons of an OFF file as CGAL's data files write it.
+Polygons parse_off_polygons(const std::string& file)
+{
+  std::ifstream in(file);
+  std::string keyword;
+  std::size_t nv = 0, nf = 0, ne = 0;
+  in >> keyword >> nv >> nf >> ne;
+  double x;
+  for(std::size_t i = 0; i < 3 * nv; ++i)
+    in >> x;
+  Polygons polygons(nf);
+  for(auto& p : polygons) {
+    std::size_t k = 0;
+    in >> k;
+    p.resize(k);
+    for(std::size_t& i : p)
+      in >> i;
+  }
+  EXPECT_TRUE(in) << file;
+  return polygons;
+}
+
+// ---------------------------------------------------------------------------
+// Label files
+
+TEST_F(LabelsFile, AnyLayoutWithComments)
+{
+  const std::string file = write("l.txt", "# regions of the cow\n3\n0 1\r\n\n   7   # the head\n2147483647\n#end");
+  EXPECT_EQ(diffuv::read_face_labels(file, 5), (std::vector<int>{3, 0, 1, 7, 2147483647}));
+  EXPECT_TRUE(diffuv::read_face_labels(write("empty.txt", "# nothing\n"), 0).empty());
+}
+
+TEST_F(LabelsFile, Errors)
+{
+  diffuv::Input_error e = label_file_error(path("missing.txt"), 1);
+  EXPECT_EQ(e.reason(), "cannot open file");
+  EXPECT_EQ(e.line(), 0u);
+  EXPECT_EQ(label_file_error(dir_.string(), 1).reason(), "cannot open file");
+
+  e = label_file_error(write("a.txt", "1\n2\n# three\n3 abc\n"), 5);
+  EXPECT_EQ(e.reason(), "\"abc\" is not an integer label");
+  EXPECT_EQ(e.line(), 4u);
+  EXPECT_EQ(label_file_error(write("b.txt", "1.5\n"), 1).reason(), "\"1.5\" is not an integer label");
+  EXPECT_EQ(label_file_error(write("c.txt", "+3\n"), 1).reason(), "\"+3\" is not an integer label");
+  EXPECT_EQ(label_file_error(write("d.txt", "0x10\n"), 1).reason(), "\"0x10\" is not an integer label");
+
+  e = label_file_error(write("e.txt", "0\n2147483648\n"), 2);
+  EXPECT_EQ(e.reason(), "label 2147483648 is out of range");
+  EXPECT_EQ(e.line(), 2u);
+  EXPECT_EQ(label_file_error(write("f.txt", "-2147483649\n"), 1).reason(), "label -2147483649 is out of range");
+  EXPECT_EQ(label_file_error(write("g.txt", "99999999999999999999\n"), 1).reason(),
+            "label 99999999999999999999 is out of range");
+
+  e = label_file_error(write("h.txt", "0\n1\n2\n3\n4\n5\n-3\n"), 7);
+  EXPECT_EQ(e.reason(), "label -3 is negative; labels are non-negative integers");
+  EXPECT_EQ(e.line(), 7u);
+  EXPECT_EQ(std::string(e.what()), path("h.txt") + ":7: label -3 is negative; labels are non-negative integers");
+
+  e = label_file_error(write("i.txt", "0\n1\n2\n"), 4);
+  EXPECT_EQ(e.reason(), "the file has 3 labels, the mesh has 4 faces");
+  EXPECT_EQ(e.line(), 0u);
+  EXPECT_EQ(label_file_error(write("j.txt", "0\n"), 2).reason(), "the file has 1 label, the mesh has 2 faces");
+  EXPECT_EQ(label_file_error(write("k.txt", "0 0\n"), 1).reason(), "the file has 2 labels, the mesh has 1 face");
+}
+
+TEST_F(LabelsFile, WriteThenRead)
+{
+  const std::vector<int> labels = {0, 5, 2147483647, 3, 3};
+  diffuv::write_face_labels(path("out.txt"), labels);
+  std::ifstream in(path("out.txt"));
+  std::stringstream text;
+  text << in.rdbuf();
+  EXPECT_EQ(text.str(), "0\n5\n2147483647\n3\n3\n");
+  EXPECT_EQ(diffuv::read_face_labels(path("out.txt"), labels.size()), labels);
+
+  EXPECT_EQ(error_text<diffuv::Output_error>([&] { diffuv::write_face_labels(path("neg.txt"), {1, -1}); }),
+            path("neg.txt") + ": face 1 has label -1; labels are non-negative integers");
+  EXPECT_FALSE(fs::exists(path("neg.txt")));
+}
+
+// ---------------------------------------------------------------------------
+// Palette
+
+TEST(LabelsPalette, WellSeparatedThenDistinct)
+{
+  EXPECT_EQ(diffuv::label_color(0), (Rgb{31, 119, 180}));
+  EXPECT_EQ(diffuv::label_color(3), (Rgb{214, 39, 40}));
+  EXPECT_EQ(diffuv::label_color(19), (Rgb{158, 218, 229}));
+  std::set<Rgb> seen;
+  const int n = 1 << 17;
+  for(int label = 0; label < n; ++label)
+    seen.insert(diffuv::label_color(label));
+  EXPECT_EQ(seen.size(), std::size_t(n));
+}
+
+// ---------------------------------------------------------------------------
+// Painted regions in CGAL's coloured meshes
+
+TEST_F(LabelsPainted, ColoredTetraPlyFaceColours)
+{
+  // The faces of colored_tetra.ply (red green blue, then an int label):
+  //   3 0 1 2 255 0 0 -1 / 3 0 3 1 0 255 0 1 / 3 1 3 2 0 0 255 -1 / 3 0 2 3 255 0 255 0
+  // Sorted colours: (0,0,255) (0,255,0) (255,0,0) (255,0,255). Its label
+  // property does not group the faces as the colours do (and is negative):
+  // the colours are used.
+  const std::string file = diffuv_test::data_path("meshes/colored_tetra.ply");
+  const diffuv::Painted_labels p = diffuv::read_painted_labels(file);
+  EXPECT_EQ(p.source, Label_source::face_colors);
+  EXPECT_EQ(p.property, "red/green/blue");
+  EXPECT_EQ(p.polygon_labels, (std::vector<int>{2, 1, 0, 3}));
+  EXPECT_EQ(p.colors, (std::vector<Rgb>{{0, 0, 255}, {0, 255, 0}, {255, 0, 0}, {255, 0, 255}}));
+
+  // CGAL's reader gives the same colours, face by face.
+  std::vector<Point_3> points;
+  Polygons polygons;
+  std::vector<CGAL::IO::Color> colors;
+  ASSERT_TRUE(cgal_read_ply(file, points, polygons, colors));
+  ASSERT_EQ(colors.size(), p.polygon_labels.size());
+  for(std::size_t j = 0; j < colors.size(); ++j)
+    EXPECT_EQ(p.colors[p.polygon_labels[j]], (Rgb{colors[j].r(), colors[j].g(), colors[j].b()})) << j;
+
+  // Asked for, the label property is read, and its -1 is an error.
+  const diffuv::Input_error e = painted_error(file, "label");
+  EXPECT_EQ(e.reason(), "face 0 has label -1 (property \"label\"); labels are non-negative integers");
+  EXPECT_EQ(e.line(), 29u);
+}
+
+TEST_F(LabelsPainted, MeshWithColorsOff)
+{
+  // COFF, faces "3 0 1 7 0.9 0 0", "3 1 2 3 0.9 0 0", "3 5 6 7 0.9 0 0",
+  // "5 1 3 4 5 7 0 0 0.9": float colours, 0.9 -> round(229.5) = 230.
+  // Blue (0,0,230) sorts before red (230,0,0). The vertices are coloured too:
+  // face colours come first.
+  const std::string file = diffuv_test::data_path("meshes/mesh_with_colors.off");
+  const diffuv::Painted_labels p = diffuv::read_painted_labels(file);
+  EXPECT_EQ(p.source, Label_source::face_colors);
+  EXPECT_EQ(p.property, "rgb");
+  EXPECT_EQ(p.polygon_labels, (std::vector<int>{1, 1, 1, 0}));
+  EXPECT_EQ(p.colors, (std::vector<Rgb>{{0, 0, 230}, {230, 0, 0}}));
+
+  // CGAL reads the same regions, but truncates 0.9 * 255 to 229.
+  std::vector<Point_3> points;
+  Polygons polygons;
+  std::vector<CGAL::IO::Color> colors;
+  const auto np = CGAL::parameters::face_color_output_iterator(std::back_inserter(colors)).verbose(false);
+  ASSERT_TRUE(CGAL::IO::read_OFF(file, points, polygons, np));
+  ASSERT_EQ(colors.size(), 4u);
+  EXPECT_EQ(colors[0], CGAL::IO::Color(229, 0, 0));
+  EXPECT_EQ(colors[3], CGAL::IO::Color(0, 0, 229));
+}
+
+// ---------------------------------------------------------------------------
+// OFF as MeshLab and Geomview write it
+
+const std::string square_points = "0 0 0\n1 0 0\n1 1 0\n0 1 0\n";
+
+TEST_F(LabelsPainted, OffFaceColoursWithoutC)
+{
+  // MeshLab writes face colours (integers and alpha) under a plain "OFF".
+  const std::string file =
+    write("m.off", "OFF\n4 2 0\n" + square_points + "3 0 1 2 200 10 10 255\n3 0 2 3 20 20 200 255\n");
+  const diffuv::Painted_labels p = diffuv::read_painted_labels(file);
+  EXPECT_EQ(p.source, Label_source::face_colors);
+  EXPECT_EQ(p.polygon_labels, (std::vector<int>{1, 0}));
+  EXPECT_EQ(p.colors, (std::vector<Rgb>{{20, 20, 200}, {200, 10, 10}}));
+
+  // A pitfall: CGAL's reader reads face colours only after a "COFF" header.
+  std::vector<Point_3> points;
+  Polygons polygons;
+  std::vector<CGAL::IO::Color> colors;
+  const auto np = CGAL::parameters::face_color_output_iterator(std::back_inserter(colors)).verbose(false);
+  ASSERT_TRUE(CGAL::IO::read_OFF(file, points, polygons, np));
+  EXPECT_TRUE(colors.empty());
+}
+
+TEST_F(LabelsPainted, CoffVertexColours)
+{
+  // Vertex colours (floats with alpha) and none on the faces: vertex labels
+  // red = 1, blue = 0 (blue sorts first): 1 1 0 0. Face 0 (1, 1, 0) -> 1,
+  // face 1 (1, 0, 0) -> 0.
+  const std::string file = write("c.off", "COFF\n4 2 0\n0 0 0 1.0 0.0 0.0 1.0\n1 0 0 1.0 0.0 0.0 1.0\n"
+                                          "1 1 0 0.0 0.0 1.0 1.0\n0 1 0 0 0 1.0 1.0\n3 0 1 2\n3 0 2 3\n");
+  const diffuv::Painted_labels p = diffuv::read_painted_labels(file);
+  EXPECT_EQ(p.source, Label_source::vertex_colors);
+  EXPECT_EQ(p.property, "rgb");
+  EXPECT_EQ(p.polygon_labels, (std::vector<int>{1, 0}));
+  EXPECT_EQ(p.colors, (std::vector<Rgb>{{0, 0, 255}, {255, 0, 0}}));
+
+  // Without colours, and for OBJ and STL: none.
+  const std::string plain = write("plain.off", "OFF\n4 2 0\n" + square_points + "3 0 1 2\n3 0 2 3\n");
+  EXPECT_EQ(diffuv::read_painted_labels(plain).source, Label_source::none);
+  const diffuv::Painted_labels obj =
+    diffuv::read_painted_labels(write("t.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"));
+  EXPECT_EQ(obj.source, Label_source::none);
+  EXPECT_TRUE(obj.polygon_labels.empty());
+  EXPECT_EQ(diffuv::read_painted_labels(diffuv_test::data_path("meshes/sphere.stl")).source, Label_source::none);
+  EXPECT_EQ(diffuv::read_painted_labels(diffuv_test::data_path("meshes/cow.off")).source, Label_source::none);
+}
+
+TEST_F(LabelsPaintedErrors, Off)
+{
+  const std::string head = "OFF\n4 2 0\n" + square_points;
+  diffuv::Input_error e = painted_error(write("a.off", head + "3 0 1 2 255 0 0\n3 0 2 3 300 0 0\n"));
+  EXPECT_EQ(e.reason(), "face 1 has colour component 300, outside [0, 255] (integers)");
+  EXPECT_EQ(e.line(), 8u);
+  e = painted_error(write("b.off", head + "3 0 1 2 1.5 0 0\n3 0 2 3 0 0 1\n"));
+  EXPECT_EQ(e.reason(), "face 0 has colour component 1.5, outside [0, 1]");
+  EXPECT_EQ(e.line(), 7u);
+  EXPECT_EQ(painted_error(write("c.off", head + "3 0 1 2 1 0\n3 0 2 3 1 0\n")).reason(),
+            "face 0 has 2 colour components; expected 3 or 4");
+  EXPECT_EQ(painted_error(write("d.off", head + "3 0 1 2 7\n3 0 2 3 7\n")).reason(),
+            "face 0 has a colour-map index; colour maps are not supported");
+  e = painted_error(write("e.off", head + "3 0 1 2 255 0 0\n3 0 2 3\n"));
+  EXPECT_EQ(e.reason(), "face 1 has no colour, but face 0 has one");
+  EXPECT_EQ(e.line(), 8u);
+  EXPECT_EQ(painted_error(write("f.off", head + "3 0 1 2\n3 0 2 3 0 0 255\n")).reason(),
+            "face 1 has a colour, but face 0 has none");
+  EXPECT_EQ(painted_error(write("g.off", head + "3 0 1 2 255 0 0\n")).reason(),
+            "not a valid OFF file (the file ends before face 1 of 2)");
+  EXPECT_EQ(painted_error(write("h.off", "COFF\n4 2 0\n" + square_points + "3 0 1 2\n3 0 2 3 9\n")).reason(),
+            "face 1 has a colour-map index; colour maps are not supported");
+  EXPECT_EQ(painted_error(path("missing.off")).reason(), "cannot open file");
+  EXPECT_EQ(painted_error(write("x.txt", "1\n")).reason(),
+            "unknown mesh file extension \".txt\" (expected .off, .obj, .ply or .stl)");
+  EXPECT_EQ(painted_error(write("i.off", head + "3 0 1 2\n3 0 2 3\n"), "label").reason(),
+            "the file has no face or vertex property \"label\"");
+}
+
+// ---------------------------------------------------------------------------
+// PLY as MeshLab and Blender write it
+
+// Bytes of a binary PLY, little- or big-endian.
+struct Bytes {
+  bool big;
+  std::string s;
+  void put(const void* p, std::size_t n)
+  {
+    const std::uint16_t probe = 1;
+    unsigned char host_little;
+    std::memcpy(&host_little, &probe, 1);
+    std::string b(static_cast<const char*>(p), n);
+    if(big == (host_little == 1))
+      std::reverse(b.begin(), b.end());
+    s += b;
+  }
+  void f32(float v) { put(&v, 4); }
+  void i32(std::int32_t v) { put(&v, 4); }
+  void u8(std::uint8_t v) { put(&v, 1); }
+};
+
+std::string meshlab_ply(bool big)
+{
+  Bytes b{big, "ply\nformat " + std::string(big ? "binary_big_endian" : "binary_little_endian") +
+                   " 1.0\ncomment VCGLIB generated\nelement vertex 4\nproperty float x\nproperty float y\n"
+                   "property float z\nelement face 2\nproperty list uchar int vertex_indices\nproperty uchar red\n"
+                   "property uchar green\nproperty uchar blue\nproperty uchar alpha\nend_header\n"};
+  const float xyz[4][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+  for(const auto& p : xyz)
+    for(float c : p)
+      b.f32(c);
+  const int faces[2][3] = {{0, 1, 2}, {0, 2, 3}};
+  const std::uint8_t rgba[2][4] = {{10, 200, 30, 255}, {10, 200, 29, 255}};
+  for(int j = 0; j < 2; ++j) {
+    b.u8(3);
+    for(int i : faces[j])
+      b.i32(i);
+    for(std::uint8_t c : rgba[j])
+      b.u8(c);
+  }
+  return b.s;
+}
+
+TEST_F(LabelsPainted, MeshLabBinaryPlyFaceColours)
+{
+  for(bool big : {false, true}) {
+    const std::string file = write("m.ply", meshlab_ply(big));
+    const diffuv::Painted_labels p = diffuv::read_painted_labels(file);
+    EXPECT_EQ(p.source, Label_source::face_colors) << big;
+    EXPECT_EQ(p.property, "red/green/blue");
+    EXPECT_EQ(p.polygon_labels, (std::vector<int>{1, 0})) << big;
+    EXPECT_EQ(p.colors, (std::vector<Rgb>{{10, 200, 29}, {10, 200, 30}})) << big;
+    Mesh mesh; // the mesh reader reads the same file
+    EXPECT_EQ(diffuv::read_triangle_mesh(file, mesh).faces_in_file, 2u);
+  }
+  std::string cut = meshlab_ply(false);
+  cut.resize(cut.size() - 3);
+  const diffuv::Input_error e = painted_error(write("cut.ply", cut));
+  EXPECT_EQ(e.reason(), "not a valid PLY file (the file ends in property \"green\" of face 1)");
+  EXPECT_EQ(e.line(), 0u);
+}
+
+// A PLY as Blender exports it: vertex colours (with alpha), normals and uv,
+// uint indices; text (format 0), little-endian (1) or big-endian (2, not
+// Blender's). A quad and a triangle; vertices red red blue red blue.
+std::string blender_ply(int format)
+{
+  const char* formats[] = {"ascii", "binary_little_endian", "binary_big_endian"};
+  Bytes b{format == 2, "ply\nformat " + std::string(formats[format]) +
+                           " 1.0\ncomment Created in Blender version 4.1.0\n"
+                           "element vertex 5\nproperty float x\nproperty float y\nproperty float z\n"
+                           "property float nx\nproperty float ny\nproperty float nz\n"
+                           "property uchar red\nproperty uchar green\nproperty uchar blue\n"
+                           "property uchar alpha\nproperty float s\nproperty float t\n"
+                           "element face 2\nproperty list uchar uint vertex_indices\nend_header\n"};
+  const float xy[5][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}, {2, 0}};
+  const bool red[5] = {true, true, false, true, false};
+  const std::vector<std::vector<std::uint32_t>> faces = {{0, 1, 2, 3}, {1, 4, 2}};
+  std::ostringstream text;
+  for(int i = 0; i < 5; ++i) {
+    const float v[8] = {xy[i][0], xy[i][1], 0, 0, 0, 1, xy[i][0], xy[i][1]};
+    const std::uint8_t rgba[4] = {std::uint8_t(red[i] ? 255 : 0), 0, std::uint8_t(red[i] ? 0 : 255), 255};
+    for(int k = 0; k < 6; ++k)
+      format ? b.f32(v[k]) : void(text << v[k] << ' ');
+    for(std::uint8_t c : rgba)
+      format ? b.u8(c) : void(text << int(c) << ' ');
+    for(int k = 6; k < 8; ++k)
+      format ? b.f32(v[k]) : void(text << v[k] << (k == 7 ? '\n' : ' '));
+  }
+  for(const auto& f : faces) {
+    format ? b.u8(std::uint8_t(f.size())) : void(text << f.size());
+    for(std::uint32_t i : f)
+      format ? b.put(&i, 4) : void(text << ' ' << i);
+    if(!format)
+      text << '\n';
+  }
+  return b.s + text.str();
+}
+
+TEST_F(LabelsPainted, BlenderPlyVertexColours)
+{
+  // Vertex labels by colour: blue (0,0,255) = 0, red = 1: 1 1 0 1 0.
+  // Quad (1, 1, 0, 1) -> 1; triangle 1 4 2 (1, 0, 0) -> 0.
+  for(int format : {0, 1, 2}) {
+    const diffuv::Painted_labels p = diffuv::read_painted_labels(write("b.ply", blender_ply(format)));
+    EXPECT_EQ(p.source, Label_source::vertex_colors) << format;
+    EXPECT_EQ(p.property, "red/green/blue");
+    EXPECT_EQ(p.polygon_labels, (std::vector<int>{1, 0})) << format;
+    EXPECT_EQ(p.colors, (std::vector<Rgb>{{0, 0, 255}, {255, 0, 0}})) << format;
+  }
+}
+
+// An ascii PLY of a square cut in two, with optional vertex and face properties.
+std::string property_ply(const std::string& vertex_property, const std::string vertex_values[4],
+                         const std::string& face_property, const std::string face_values[2])
+{
+  std::string s = "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n";
+  if(!vertex_property.empty())
+    s += "property " + vertex_property + "\n";
+  s += "element face 2\nproperty list uchar int vertex_indices\n";
+  if(!face_property.empty())
+    s += "property " + face_property + "\n";
+  s += "end_header\n";
+  const char* xyz[4] = {"0 0 0", "1 0 0", "1 1 0", "0 1 0"};
+  for(int i = 0; i < 4; ++i)
+    s += std::string(xyz[i]) + (vertex_property.empty() ? "" : " " + vertex_values[i]) + "\n";
+  const char* faces[2] = {"3 0 1 2", "3 0 2 3"};
+  for(int j = 0; j < 2; ++j)
+    s += std::string(faces[j]) + (face_property.empty() ? "" : " " + face_values[j]) + "\n";
+  return s;
+}
+
+TEST_F(LabelsPainted, IntegerProperties)
+{
+  const std::string regions[4] = {"5", "5", "6", "6"}, none[4];
+  const std::string segments[2] = {"4", "7"};
+  // A face property first.
+  diffuv::Painted_labels p =
+    diffuv::read_painted_labels(write("a.ply", property_ply("int region", regions, "int segment", segments)));
+  EXPECT_EQ(p.source, Label_source::face_property);
+  EXPECT_EQ(p.property, "segment");
+  EXPECT_EQ(p.polygon_labels, (std::vector<int>{4, 7}));
+  EXPECT_TRUE(p.colors.empty());
+  // Then a vertex property: (5, 5, 6) -> 5, (5, 6, 6) -> 6.
+  p = diffuv::read_painted_labels(write("b.ply", property_ply("int region", regions, "", segments)));
+  EXPECT_EQ(p.source, Label_source::vertex_property);
+  EXPECT_EQ(p.property, "region");
+  EXPECT_EQ(p.polygon_labels, (std::vector<int>{5, 6}));
+  // MeshLab's quality is a float: used when its values are whole numbers...
+  const std::string whole[2] = {"2", "3.0"}, fractional[2] = {"2.5", "3"};
+  p = diffuv::read_painted_labels(write("c.ply", property_ply("int region", regions, "float quality", whole)));
+  EXPECT_EQ(p.source, Label_source::face_property);
+  EXPECT_EQ(p.property, "quality");
+  EXPECT_EQ(p.polygon_labels, (std::vector<int>{2, 3}));
+  // ... and skipped otherwise (it is not a labelling), unless asked for.
+  const std::string d = write("d.ply", property_ply("int region", regions, "float quality", fractional));
+  EXPECT_EQ(diffuv::read_painted_labels(d).source, Label_source::vertex_property);
+  const diffuv::Input_error e = painted_error(d, "quality");
+  EXPECT_EQ(e.reason(), "face 0 has value 2.5 in property \"quality\", not an integer label");
+  EXPECT_EQ(e.line(), 16u);
+  // An unknown name is not a label property, unless asked for.
+  const std::string f = write("f.ply", property_ply("", none, "ushort my_regions", segments));
+  EXPECT_EQ(diffuv::read_painted_labels(f).source, Label_source::none);
+  p = diffuv::read_painted_labels(f, "MY_REGIONS");
+  EXPECT_EQ(p.source, Label_source::face_property);
+  EXPECT_EQ(p.property, "my_regions");
+  EXPECT_EQ(p.polygon_labels, (std::vector<int>{4, 7}));
+  EXPECT_EQ(painted_error(f, "label").reason(), "the file has no face or vertex property \"label\"");
+}
+
+TEST_F(LabelsPainted, VertexPropertyBeforeVertexColours)
+{
+  const std::string values[4] = {"0 255 0 0", "0 255 0 0", "3 0 0 255", "3 0 0 255"}, none[2];
+  const std::string properties = "int label\nproperty uint8 Red\nproperty uint8 green\nproperty uint8 blue";
+  const std::string file = write("v.ply", property_ply(properties, values, "", none));
+  const diffuv::Painted_labels p = diffuv::read_painted_labels(file);
+  EXPECT_EQ(p.source, Label_source::vertex_property);
+  EXPECT_EQ(p.property, "label");
+  EXPECT_EQ(p.polygon_labels, (std::vector<int>{0, 3}));
+}
+
+TEST_F(LabelsPaintedErrors, Ply)
+{
+  const std::string regions[4] = {"5", "5", "6", "6"}, none[4];
+  const std::string negative[2] = {"4", "-1"}, huge[2] = {"4", "4294967295"};
+  diffuv::Input_error e = painted_error(write("a.ply", property_ply("", none, "int segment", negative)));
+  EXPECT_EQ(e.reason(), "face 1 has label -1 (property \"segment\"); labels are non-negative integers");
+  EXPECT_EQ(e.line(), 16u);
+  EXPECT_EQ(painted_error(write("b.ply", property_ply("", none, "uint segment", huge))).reason(),
+            "face 1 has label 4294967295 (property \"segment\"), out of range");
+  const std::string colours[4] = {"255 0 0", "255 0 0", "0 0 1.5", "0 0 255"};
+  e = painted_error(write("c.ply", property_ply("float red\nproperty float green\nproperty float blue", colours, "",
+                                                none)));
+  EXPECT_EQ(e.reason(), "vertex 0 has colour component 255, outside [0, 1]");
+  EXPECT_EQ(e.line(), 13u);
+  // A vertex index out of range matters for vertex sources.
+  std::string bad = property_ply("int region", regions, "", none);
+  bad.replace(bad.find("3 0 2 3"), 7, "3 0 2 9");
+  e = painted_error(write("d.ply", bad));
+  EXPECT_EQ(e.reason(), "face 1 has vertex index 9, out of range (the file has 4 vertices)");
+  EXPECT_EQ(e.line(), 16u);
+
+  EXPECT_EQ(painted_error(write("e.ply", "plx\n")).reason(),
+            "not a valid PLY file (the file does not start with \"ply\")");
+  e = painted_error(write("f.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty half x\nend_header\n"));
+  EXPECT_EQ(e.reason(), "not a valid PLY file (cannot read the property line \"property half x\")");
+  EXPECT_EQ(e.line(), 4u);
+  EXPECT_EQ(painted_error(write("g.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n")).reason(),
+            "not a valid PLY file (the header has no end_header line)");
+  e = painted_error(write("h.ply", "ply\nformat ascii 1.0\nelement vertex 1000\nproperty float x\nend_header\n1\n"));
+  EXPECT_EQ(e.reason(), "not a valid PLY file (the header announces 1000 vertex items, more than the file can hold)");
+  EXPECT_EQ(e.line(), 3u);
+  e = painted_error(write("i.ply", "ply\nformat ascii 1.0\nelement vertex 2\nproperty float x\nend_header\n1\nz\n"));
+  EXPECT_EQ(e.reason(), "not a valid PLY file (cannot read property \"x\" of vertex 1)");
+  EXPECT_EQ(e.line(), 7u);
+}
+
+// ---------------------------------------------------------------------------
+// Per-vertex labels
+
+TEST(LabelsVertexRule, MajorityThenSmallest)
+{
+  const std::vector<int> vertex_labels = {3, 3, 1, 2, 2, 7};
+  const Polygons polygons = {{0, 1, 2},    // 3 3 1: majority 3
+                             {1, 2, 3},    // 3 1 2: all differ, smallest 1
+                             {0, 2, 3, 4}, // 3 1 2 2: 2
+                             {0, 1, 3, 4}, // 3 3 2 2: tie, smallest 2
+                             {2, 5, 0, 1}, // 1 7 3 3: 3
+                             {5, 5, 5}};
+  const std::vector<int> expected = {3, 1, 2, 2, 3, 7};
+  EXPECT_EQ(diffuv::vertex_labels_to_polygons(vertex_labels, polygons), expected);
+  // Independent of the order of the vertices.
+  for(std::size_t j = 0; j < polygons.size(); ++j) {
+    std::vector<std::size_t> p = polygons[j];
+    std::sort(p.begin(), p.end());
+    do
+      EXPECT_EQ(diffuv::vertex_labels_to_polygons(vertex_labels, Polygons{p}), std::vector<int>{expected[j]});
+    while(std::next_permutation(p.begin(), p.end()));
+  }
+  EXPECT_EQ(error_text<diffuv::Error>([&] { diffuv::vertex_labels_to_polygons(vertex_labels, Polygons{{0, 6, 1}}); }),
+            "polygon 0 has vertex index 6, but there are 6 vertex labels");
+  const std::vector<std::vector<int>> signed_polygons = {{0, 1, 2}, {-1}};
+  EXPECT_EQ(error_text<diffuv::Error>([&] { diffuv::vertex_labels_to_polygons(vertex_labels, signed_polygons); }),
+            "polygon 1 has vertex index -1, but there are 6 vertex labels");
+  EXPECT_EQ(error_text<diffuv::Error>([&] { diffuv::vertex_labels_to_polygons(vertex_labels, Polygons{{}}); }),
+            "polygon 0 has no vertex");
+}
+
+// ---------------------------------------------------------------------------
+// Labels of the polygons of a file -> labels of the triangles of the mesh
+
+// Checks that each face of the mesh read from `file` gets the label of the
+// only polygon of the file that has its three corners.
+void expect_triangles_take_their_polygon_label(const std::string& file, const Polygons& polygons)
+{
+  std::vector<int> polygon_labels(polygons.size());
+  for(std::size_t j = 0; j < polygons.size(); ++j)
+    polygon_labels[j] = static_cast<int>((7 * j + 3) % 11);
+  Mesh mesh;
+  const diffuv::Mesh_read_report report = diffuv::read_triangle_mesh(file, mesh);
+  const std::vector<int> labels = diffuv::face_labels_of_mesh(polygon_labels, report);
+  ASSERT_EQ(labels.size(), num_faces(mesh)) << file;
+  std::size_t f = 0;
+  std::vector<std::size_t> triangles(polygons.size(), 0);
+  for(face_descriptor face : faces(mesh)) {
+    std::vector<std::size_t> owners;
+    for(std::size_t j = 0; j < polygons.size(); ++j) {
+      const auto& p = polygons[j];
+      const auto c = corners(mesh, face);
+      if(std::all_of(c.begin(), c.end(), [&](std::size_t v) { return std::find(p.begin(), p.end(), v) != p.end(); }))
+        owners.push_back(j);
+    }
+    ASSERT_EQ(owners.size(), 1u) << file << " face " << f;
+    ++triangles[owners[0]];
+    EXPECT_EQ(labels[f++], polygon_labels[owners[0]]) << file << " face " << f - 1;
+  }
+  for(std::size_t j = 0; j < polygons.size(); ++j)
+    EXPECT_EQ(triangles[j], polygons[j].size() - 2) << file << " polygon " << j;
+}
+
+TEST_F(LabelsMesh, TrianglesOfAQuadTakeItsLabel)
+{
+  for(const char* name : {"meshes/cube_quad.off", "meshes/torus_quad.off"}) {
+    const std::string file = diffuv_test::data_path(name);
+    expect_triangles_take_their_polygon_label(file, parse_off_polygons(file));
+  }
+  // Quads, a pentagon (triangulated by CGAL's CDT) and a triangle.
+  const std::string file = write("q.off", "OFF\n9 4 0\n0 0 0\n1 0 0\n2 0 0\n0 1 0\n1 1 0\n2 1 0\n0 2 0\n"
+                                          "2 2 0.1\n3 0 0\n4 0 1 4 3\n4 1 2 5 4\n5 3 4 5 7 6\n3 2 8 5\n");
+  expect_triangles_take_their_polygon_label(file, parse_off_polygons(file));
+}
+
+TEST_F(LabelsMesh, Errors)
+{
+  Mesh mesh;
+  diffuv::Mesh_read_report report =
+    diffuv::read_triangle_mesh(write("q.off", "OFF\n4 1 0\n" + square_points + "4 0 1 2 3\n"), mesh);
+  EXPECT_EQ(diffuv::face_labels_of_mesh({8}, report), (std::vector<int>{8, 8}));
+  EXPECT_EQ(error_text<diffuv::Error>([&] { diffuv::face_labels_of_mesh({1, 2}, report); }),
+            "there are 2 polygon labels, the mesh file has 1 face");
+  report.file_face.clear();
+  EXPECT_EQ(error_text<diffuv::Error>([&] { diffuv::face_labels_of_mesh({1}, report); }),
+            "the mesh read report has no face provenance (file_face)");
+}
+
+// ---------------------------------------------------------------------------
+// Labelled PLY: write, then read back
+
+TEST_F(LabelsPly, RoundTripOfARealMesh)
+{
+  Mesh mesh;
+  const diffuv::Mesh_read_report report =
+    diffuv::read_triangle_mesh(diffuv_test::data_path("meshes/nefertiti.off"), mesh);
+  std::vector<int> labels(report.faces);
+  for(std::size_t f = 0; f < labels.size(); ++f) // gaps, and labels past the palette
+    labels[f] = static_cast<int>((f / 37) % 9 * 5 + (f % 5 == 0 ? 1000000 : 0));
+
+  for(bool binary : {false, true}) {
+    const std::string file = path(binary ? "binary.ply" : "text.ply");
+    diffuv::Labelled_ply_options options;
+    options.binary = binary;
+    diffuv::write_labelled_ply(file, mesh, get(CGAL::vertex_point, mesh), labels, options);
+
+    const diffuv::Painted_labels p = diffuv::read_painted_labels(file);
+    EXPECT_EQ(p.source, Label_source::face_property) << binary;
+    EXPECT_EQ(p.property, "label");
+    EXPECT_EQ(p.polygon_labels, labels) << binary;
+
+    // CGAL's reader: the same points in the same order, the same faces, and
+    // each face in the colour of its label.
+    std::vector<Point_3> points;
+    Polygons polygons;
+    std::vector<CGAL::IO::Color> colors;
+    ASSERT_TRUE(cgal_read_ply(file, points, polygons, colors, binary));
+    ASSERT_EQ(points.size(), num_vertices(mesh));
+    ASSERT_EQ(polygons.size(), num_faces(mesh));
+    ASSERT_EQ(colors.size(), num_faces(mesh));
+    std::size_t i = 0, wrong_points = 0;
+    for(vertex_descriptor v : vertices(mesh))
+      wrong_points += points[i++] != mesh.point(v);
+    EXPECT_EQ(wrong_points, 0u);
+    std::size_t j = 0, wrong_faces = 0, wrong_colours = 0;
+    for(face_descriptor f : faces(mesh)) {
+      wrong_faces += polygons[j] != corners(mesh, f);
+      const Rgb expected = diffuv::label_color(labels[j]);
+      wrong_colours += Rgb{colors[j].r(), colors[j].g(), colors[j].b()} != expected;
+      ++j;
+    }
+    EXPECT_EQ(wrong_faces, 0u);
+    EXPECT_EQ(wrong_colours, 0u);
+  }
+}
+
+TEST_F(LabelsPly, RepaintedOrSharedColoursAreReadAsColours)
+{
+  const Mesh grid = diffuv_test::make_grid(2, 2); // 8 triangles
+  const std::vector<int> labels = {0, 0, 1, 1, 2, 2, 3, 3};
+  const std::string file = path("g.ply");
+  diffuv::write_labelled_ply(file, grid, get(CGAL::vertex_point, grid), labels);
+
+  // Repaint the last face in the colour of label 0 (MeshLab keeps the stale
+  // label property): the colours win, ranked (r, g, b).
+  std::ifstream in(file);
+  std::vector<std::string> lines;
+  for(std::string line; std::getline(in, line);)
+    lines.push_back(line);
+  in.close();
+  const Rgb c0 = diffuv::label_color(0);
+  std::istringstream last(lines.back()); // "3 i j k r g b label"
+  std::string count, i, j, k;
+  last >> count >> i >> j >> k;
+  lines.back() = count + " " + i + " " + j + " " + k + " " + std::to_string(c0[0]) + " " + std::to_string(c0[1]) +
+                 " " + std::to_string(c0[2]) + " 3";
+  std::string text;
+  for(const std::string& line : lines)
+    text += line + "\n";
+  const diffuv::Painted_labels p = diffuv::read_painted_labels(write("g2.ply", text));
+  EXPECT_EQ(p.source, Label_source::face_colors);
+  // Colours of labels 0-3: (31,119,180) (255,127,14) (44,160,44) (214,39,40).
+  EXPECT_EQ(p.polygon_labels, (std::vector<int>{0, 0, 3, 3, 1, 1, 2, 0}));
+
+  // Colours given by the caller, shared by two labels: read back as colours.
+  diffuv::Labelled_ply_options options;
+  options.colors = {{9, 9, 9}, {9, 9, 9}, {1, 2, 3}, {200, 0, 0}};
+  diffuv::write_labelled_ply(file, grid, get(CGAL::vertex_point, grid), labels, options);
+  const diffuv::Painted_labels shared = diffuv::read_painted_labels(file);
+  EXPECT_EQ(shared.source, Label_source::face_colors);
+  EXPECT_EQ(shared.polygon_labels, (std::vector<int>{1, 1, 1, 1, 0, 0, 2, 2}));
+}
+
+TEST_F(LabelsPly, WriteErrorsWriteNothing)
+{
+  const Mesh grid = diffuv_test::make_grid(2, 2);
+  const auto vpm = get(CGAL::vertex_point, grid);
+  const std::string file = path("g.ply");
+  EXPECT_EQ(error_text<diffuv::Output_error>([&] { diffuv::write_labelled_ply(file, grid, vpm, {0, 0}); }),
+            file + ": 2 face labels for a mesh of 8 faces");
+  EXPECT_EQ(error_text<diffuv::Output_error>(
+              [&] { diffuv::write_labelled_ply(file, grid, vpm, {0, 0, 0, 0, 0, 0, -2, 0}); }),
+            file + ": face 6 has label -2; labels are non-negative integers");
+  diffuv::Labelled_ply_options options;
+  options.colors = {{1, 1, 1}, {2, 2, 2}, {3, 3, 3}};
+  EXPECT_EQ(error_text<diffuv::Output_error>(
+              [&] { diffuv::write_labelled_ply(file, grid, vpm, {0, 1, 2, 0, 1, 2, 3, 0}, options); }),
+            file + ": face 6 has label 3, but only 3 colours are given");
+  EXPECT_FALSE(fs::exists(file));
+  EXPECT_TRUE(fs::is_empty(dir_));
+}
+
+} // namespace
