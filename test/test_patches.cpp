@@ -38,6 +38,19 @@ std::vector<int> block_labels(const Mesh& grid)
 // A closed round mesh of CGAL's data set (812 vertices).
 const Mesh& sphere() { return cgal_mesh("larger_sphere.off"); }
 
+// Labels of a closed round mesh by height: caps above and below, a band between.
+std::vector<int> banded_labels(const Mesh& m, double cap)
+{
+  std::vector<int> labels(num_faces(m));
+  double zmin = 1e300, zmax = -1e300;
+  for(auto v : vertices(m)) { zmin = std::min(zmin, m.point(v).z()); zmax = std::max(zmax, m.point(v).z()); }
+  for(auto f : faces(m)) {
+    const double t = (face_centroid(m, f).z() - zmin) / (zmax - zmin);
+    labels[f.idx()] = t > 1 - cap ? 2 : (t < cap ? 0 : 1);
+  }
+  return labels;
+}
+
 TEST(Patches, ComponentsOfLabelsInCanonicalOrder)
 {
   const Mesh grid = make_grid(9, 9);
@@ -136,6 +149,28 @@ TEST(Patches, SideOrderDependsOnLabelsNotOnVertexOrFaceOrder)
   EXPECT_GE(compared, num_vertices(cow));
 }
 
+TEST(Patches, FastDiscCheckAgreesWithTheFilteredGraphCheck)
+{
+  // check_patch_disc works on the patch alone; check_disc on a Face_filtered_graph is the reference.
+  auto compare = [](const Mesh& m, const std::vector<int>& labels) {
+    const Seg seg = diffuv::patches_from_labels(m, labels, m.points());
+    std::size_t bad = 0;
+    for(std::size_t p = 0; p < seg.number_of_patches(); ++p) {
+      const CGAL::Face_filtered_graph<Mesh> patch(m, seg.patch_faces[p]);
+      const diffuv::Status reference = diffuv::check_disc(patch), fast = diffuv::check_patch_disc(m, seg, p);
+      EXPECT_EQ(fast.ok(), reference.ok()) << "patch " << p << ": " << fast.what() << " / " << reference.what();
+      if(!reference.ok()) ++bad;
+    }
+    return bad;
+  };
+  const Mesh& s = sphere();
+  EXPECT_EQ(compare(s, banded_labels(s, 0.25)), 1u); // the band
+  const Mesh& cow = cgal_mesh("cow.off");
+  std::vector<int> raw(num_faces(cow));
+  for(auto f : faces(cow)) raw[f.idx()] = int(4 * (face_centroid(cow, f).y() + 0.31) / 0.62); // height bands
+  EXPECT_GT(compare(cow, raw), 0u);
+}
+
 TEST(Patches, EarFacesMoveAcrossRegionBorders)
 {
   const Mesh grid = make_grid(4, 4);
@@ -166,19 +201,6 @@ TEST(Patches, SmallPiecesAreMergedIntoANeighbour)
   EXPECT_EQ(diffuv::merge_small_patches(grid, labels, seg, grid.points()), 1u);
   EXPECT_EQ(seg.number_of_patches(), 1u);
   EXPECT_EQ(labels[17], 0);
-}
-
-// Labels of a closed round mesh by height: caps above and below, a band between.
-std::vector<int> banded_labels(const Mesh& m, double cap)
-{
-  std::vector<int> labels(num_faces(m));
-  double zmin = 1e300, zmax = -1e300;
-  for(auto v : vertices(m)) { zmin = std::min(zmin, m.point(v).z()); zmax = std::max(zmax, m.point(v).z()); }
-  for(auto f : faces(m)) {
-    const double t = (face_centroid(m, f).z() - zmin) / (zmax - zmin);
-    labels[f.idx()] = t > 1 - cap ? 2 : (t < cap ? 0 : 1);
-  }
-  return labels;
 }
 
 TEST(Patches, NonDiscRegionsAreCutIntoDiscsOrReported)

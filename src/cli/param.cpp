@@ -122,7 +122,7 @@ void run_param(const Param_options& options)
 {
   if(!options.corners.empty() && (!options.patches.labels.empty()))
     throw CLI::ValidationError("--corners", "applies to a disc mesh without --labels");
-  const std::string mesh_path = options.mesh.empty() ? default_mesh("mushroom.off") : options.mesh;
+  const std::string mesh_path = options.mesh.empty() ? default_mesh("cow.off") : options.mesh;
   const Input_mesh in = read_input(mesh_path, options.patches);
 
   std::vector<vertex_descriptor> corners;
@@ -229,7 +229,7 @@ void add_param_command(CLI::App& app)
                "and the patches");
   cmd->add_option("mesh", options->mesh,
                   "Triangle mesh (OFF, OBJ, PLY, STL). A disc is one patch; any other mesh is cut into disc patches. "
-                  "Default: CGAL's mushroom.off");
+                  "Default: CGAL's cow.off");
   cmd->add_option("--corners", options->corners,
                   "Disc mesh only: CGAL *.selection.txt with four boundary vertex indices on its first line. The first "
                   "goes to (0,0), the others follow counter-clockwise along the boundary to (1,0), (1,1), (0,1). "
