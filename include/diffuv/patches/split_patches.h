@@ -60,15 +60,18 @@ components_across(const TriangleMesh& tm, const std::vector<typename boost::grap
 } // namespace internal
 
 /// Whether patch `p` is a cap: one boundary loop with the same neighbouring
-/// patch all around (not the mesh border).
+/// region label all around (not the mesh border). Labels, not patches, so that
+/// a cap stays one when the region around it was cut into several pieces.
 template <class TriangleMesh, class VertexPointMap>
 bool is_cap(const TriangleMesh& tm, const Segmentation<TriangleMesh>& seg, std::size_t p, VertexPointMap vpm)
 {
   const auto loops = patch_loops(tm, seg, p, vpm);
   if(loops.size() != 1) return false;
   const auto& n = loops.front().neighbour;
-  return n.front() != Patch_loop<TriangleMesh>::mesh_border &&
-         std::all_of(n.begin(), n.end(), [&](std::size_t q) { return q == n.front(); });
+  constexpr std::size_t border = Patch_loop<TriangleMesh>::mesh_border;
+  if(n.front() == border || seg.patch_label[n.front()] == seg.patch_label[p]) return false;
+  return std::all_of(n.begin(), n.end(),
+                     [&](std::size_t q) { return q != border && seg.patch_label[q] == seg.patch_label[n.front()]; });
 }
 
 /// Splits cap `p` in two along an edge path through its tip: the tip is the
