@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Quick start (a): set up, build in Release, run `diffuv param` on CGAL's mushroom.off.
+# Quick start (a): set up, build in Release, run `diffuv param` on CGAL's cow.off (automatic patches).
 # Results are written to ./diffuv-out/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
