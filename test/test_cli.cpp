@@ -31,17 +31,8 @@ std::string slurp(const fs::path& p)
   return ss.str();
 }
 
-class Tool : public ::testing::Test {
+class Tool : public diffuv_test::Temp_dir_test {
 protected:
-  void SetUp() override
-  {
-    dir_ = fs::temp_directory_path() /
-           ("diffuv_cli_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
   Tool_run run(const std::string& args)
   {
     const std::string cmd = std::string(DIFFUV_TOOL_PATH) + " " + args + " >" + (dir_ / "stdout").string() + " 2>" +
@@ -49,14 +40,7 @@ protected:
     const int status = std::system(cmd.c_str());
     return Tool_run{WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(dir_ / "stdout"), slurp(dir_ / "stderr")};
   }
-  std::string write(const std::string& name, const std::string& content)
-  {
-    std::ofstream(dir_ / name) << content;
-    return (dir_ / name).string();
-  }
   fs::path out_dir() const { return dir_ / "out"; }
-
-  fs::path dir_;
 };
 
 std::vector<std::vector<std::string>> read_csv(const fs::path& p)

@@ -9,6 +9,10 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
 #include <map>
 #include <vector>
 #include <string>
@@ -73,6 +77,34 @@ double signed_uv_area(const Mesh& m, Mesh::Face_index f, UvOf uv_of)
   const Point_2 a = uv_of(m.source(h)), b = uv_of(m.target(h)), c = uv_of(m.target(m.next(h)));
   return 0.5 * ((b.x() - a.x()) * (c.y() - a.y()) - (c.x() - a.x()) * (b.y() - a.y()));
 }
+
+/// A fixture with a fresh folder per test (named after the test and the
+/// process), removed afterwards, and helpers to write files into it.
+class Temp_dir_test : public ::testing::Test {
+protected:
+  void SetUp() override
+  {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    dir_ = std::filesystem::temp_directory_path() /
+           ("diffuv_test_" + std::to_string(::getpid()) + "_" + info->test_suite_name() + "_" + info->name());
+    std::filesystem::remove_all(dir_);
+    std::filesystem::create_directories(dir_);
+  }
+  void TearDown() override { std::filesystem::remove_all(dir_); }
+
+  /// The path of `name` in the folder.
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+
+  /// Writes `content` to `name` in the folder and returns its path.
+  std::string write(const std::string& name, const std::string& content) const
+  {
+    std::ofstream out(path(name), std::ios::binary);
+    out << content;
+    return path(name);
+  }
+
+  std::filesystem::path dir_;
+};
 
 } // namespace diffuv_test
 

@@ -38,30 +38,7 @@ using vertex_descriptor = boost::graph_traits<Mesh>::vertex_descriptor;
 using halfedge_descriptor = boost::graph_traits<Mesh>::halfedge_descriptor;
 using face_descriptor = boost::graph_traits<Mesh>::face_descriptor;
 
-// A fresh folder per test, removed afterwards.
-class IoTest : public ::testing::Test {
-protected:
-  void SetUp() override
-  {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() /
-           ("diffuv_test_io_" + std::to_string(::getpid()) + "_" + info->test_suite_name() + "_" + info->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
-
-  std::string write(const std::string& name, const std::string& content) const
-  {
-    std::ofstream out(path(name), std::ios::binary);
-    out << content;
-    return path(name);
-  }
-
-  fs::path dir_;
-};
+using IoTest = diffuv_test::Temp_dir_test;
 
 using IoReadMesh = IoTest;
 using IoSelection = IoTest;

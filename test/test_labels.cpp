@@ -40,29 +40,7 @@ using face_descriptor = boost::graph_traits<Mesh>::face_descriptor;
 using vertex_descriptor = boost::graph_traits<Mesh>::vertex_descriptor;
 using Polygons = std::vector<std::vector<std::size_t>>;
 
-class LabelsTest : public ::testing::Test {
-protected:
-  void SetUp() override
-  {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() /
-           ("diffuv_test_labels_" + std::to_string(::getpid()) + "_" + info->test_suite_name() + "_" + info->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
-
-  std::string write(const std::string& name, const std::string& content) const
-  {
-    std::ofstream out(path(name), std::ios::binary);
-    out << content;
-    return path(name);
-  }
-
-  fs::path dir_;
-};
+using LabelsTest = diffuv_test::Temp_dir_test;
 
 using LabelsFile = LabelsTest;
 using LabelsPainted = LabelsTest;
