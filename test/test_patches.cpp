@@ -2,6 +2,7 @@
 // (small pieces, non-disc regions, caps), automatic patches.
 #include "test_data.h"
 
+#include <diffuv/parameterization/parameterize_disc.h>
 #include <diffuv/parameterization/parameterize_patches.h>
 #include <diffuv/patches/disc_patches.h>
 #include <diffuv/patches/region_sides.h>
@@ -275,6 +276,18 @@ TEST(Patches, CapsAreSplitInTwo)
   diffuv::Side_report side_report;
   ASSERT_TRUE(diffuv::region_sides(m, whole, 0, m.points(), sides, &side_report).ok());
   EXPECT_TRUE(side_report.equal_arcs);
+
+  // A disc mesh as one patch gets the same corners as parameterize_disc(): the
+  // sharpest boundary vertex at (0,0), then equal arcs.
+  const Mesh& disc = cgal_mesh("nefertiti.off");
+  Seg one;
+  ASSERT_TRUE(diffuv::disc_patches(disc, {}, disc.points(), one).ok());
+  ASSERT_EQ(one.number_of_patches(), 1u);
+  diffuv::Four_sides<vertex_descriptor> by_region, by_disc;
+  ASSERT_TRUE(diffuv::region_sides(disc, one, 0, disc.points(), by_region).ok());
+  diffuv::Uv_atlas<Mesh> atlas(disc);
+  ASSERT_TRUE(diffuv::parameterize_disc(disc, {}, atlas, &by_disc).ok());
+  EXPECT_EQ(by_region.corners, by_disc.corners);
 }
 
 // Every vertex of a closed mesh gets a (patch, u, v) with u, v in [0,1].

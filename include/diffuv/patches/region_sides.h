@@ -76,9 +76,12 @@ Status region_sides(const TriangleMesh& tm, const Segmentation<TriangleMesh>& se
     if(loop.neighbour[(i + n - 1) % n] != loop.neighbour[i]) corners.push_back(i);
   r.runs = corners.size();
 
+  std::size_t sharpest = n; // loop position of equal_arc_corners()'s first corner
   if(corners.empty()) {
     r.equal_arcs = true;
     const auto chosen = equal_arc_corners(tm, vpm, loop.vertices);
+    sharpest = static_cast<std::size_t>(std::find(loop.vertices.begin(), loop.vertices.end(), chosen.front()) -
+                                        loop.vertices.begin());
     for(auto v : chosen)
       corners.push_back(static_cast<std::size_t>(std::find(loop.vertices.begin(), loop.vertices.end(), v) -
                                                  loop.vertices.begin()));
@@ -149,9 +152,14 @@ Status region_sides(const TriangleMesh& tm, const Segmentation<TriangleMesh>& se
     return std::make_tuple(std::array<std::vector<long long>, 4>{keys[s], keys[(s + 1) % 4], keys[(s + 2) % 4], keys[(s + 3) % 4]},
                            std::array<double, 4>{lengths[s], lengths[(s + 1) % 4], lengths[(s + 2) % 4], lengths[(s + 3) % 4]});
   };
+  // With no junction, all four keys are equal: the sharpest vertex stays (0,0).
   std::size_t first = 0;
-  for(std::size_t s = 1; s < 4; ++s)
-    if(rotation_key(s) < rotation_key(first)) first = s;
+  if(r.equal_arcs) {
+    first = static_cast<std::size_t>(std::find(corners.begin(), corners.end(), sharpest) - corners.begin());
+  } else {
+    for(std::size_t s = 1; s < 4; ++s)
+      if(rotation_key(s) < rotation_key(first)) first = s;
+  }
 
   std::vector<vertex_descriptor> ordered;
   for(std::size_t c = 0; c < 4; ++c) ordered.push_back(loop.vertices[corners[(first + c) % 4]]);
