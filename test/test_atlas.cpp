@@ -5,6 +5,9 @@
 #include <diffuv/parameterization/parameterize_disc.h>
 
 #include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/AABB_face_graph_triangle_primitive.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
 #include <CGAL/Polygon_mesh_processing/locate.h>
 #include <CGAL/Surface_mesh_parameterization/Mean_value_coordinates_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/parameterize.h>
@@ -70,13 +73,21 @@ TEST(Atlas, PointLocationAgreesWithCgalAabbLocate)
   auto uvmap = mesh.add_property_map<vertex_descriptor, Point_2>("v:test_uv").first;
   add_mean_value_chart(mesh, atlas, uvmap);
 
+  // CGAL's reference: an AABB tree over the faces in the uv plane (a 2D point
+  // map, lifted to z = 0), queried with locate_with_AABB_tree().
+  using Uv_map = decltype(uvmap);
+  using Lifted = PMP::internal::Point_to_Point_3_VPM<Mesh, Uv_map>;
+  using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, CGAL::AABB_face_graph_triangle_primitive<Mesh, Lifted>>>;
+  Tree tree;
+  PMP::build_AABB_tree(mesh, tree, CGAL::parameters::vertex_point_map(uvmap));
+
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> coord(0., 1.);
   std::size_t inside = 0;
   for(int k = 0; k < 300; ++k) {
     const Point_2 q(coord(rng), coord(rng));
     const auto ours = atlas.locate(0, q);
-    const auto theirs = PMP::locate(q, mesh, CGAL::parameters::vertex_point_map(uvmap));
+    const auto theirs = PMP::locate_with_AABB_tree(q, tree, mesh, CGAL::parameters::vertex_point_map(uvmap));
     // Same surface point (faces may differ when q is on a shared edge).
     const Point_3 a = atlas.point(ours), b = PMP::construct_point(theirs, mesh);
     EXPECT_LT(std::sqrt(CGAL::squared_distance(a, b)), 1e-9) << "q = " << q;

@@ -20,7 +20,7 @@
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/number_utils.h>
 
-#include <boost/function_output_iterator.hpp>
+#include <boost/iterator/function_output_iterator.hpp>
 #include <boost/graph/graph_traits.hpp>
 #include <boost/graph/properties.hpp>
 #include <boost/property_map/property_map.hpp>
@@ -46,12 +46,14 @@ namespace diffuv {
 /// which `Surface_mesh_shortest_path` requires), any vertex point map.
 ///
 /// Each source vertex is passed as a face location (`face_location(v, mesh)`:
-/// a barycentric corner of one of its faces). CGAL 5.5 has an assertion,
-/// `!node->is_null_face()`, that fails in builds without `NDEBUG` when a
-/// source lies on the mesh border (it is one of the cones of the border
-/// vertex's pseudo-source that reaches the hole); with `NDEBUG` the distances
-/// are right (checked against edge-path and unfolding upper bounds and
-/// analytic values). Sides of a patch are on its border: build with `NDEBUG`.
+/// a barycentric corner of one of its faces). **Build with `NDEBUG`** (or
+/// `CGAL_NO_ASSERTIONS`) when sources may lie on the border, as the sides of a
+/// patch do: CGAL 5.5 then fails the internal assertion
+/// `!node->is_null_face()` (Surface_mesh_shortest_path.h, line 1473) during
+/// the propagation, whether the source is given as a vertex or as a face
+/// location (checked on nefertiti.off and mushroom.off). With assertions off
+/// the distances are right: equal to Euclidean distances on flat grids with a
+/// border column as sources, never above edge-path distances (test_distances.cpp).
 ///
 /// \tparam TriangleMesh a model of `FaceListGraph` and `VertexListGraph` with an
 ///         internal vertex index in `[0, num_vertices(g))`; triangle faces
