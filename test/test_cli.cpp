@@ -198,7 +198,7 @@ TEST_F(Tool, ClosedMeshesAreCutIntoPatchesAndEveryVertexIsMapped)
 {
   const Tool_run r = run("param " + data_path("meshes/cow.off") + " -o " + out_dir().string());
   ASSERT_EQ(r.code, 0) << r.err;
-  EXPECT_NE(r.out.find("patches: automatic"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("graph distances: automatic"), std::string::npos) << r.out;
   const auto rows = read_csv(out_dir() / "cow.uv.csv");
   std::set<std::size_t> mapped;
   for(std::size_t i = 1; i < rows.size(); ++i) {
@@ -259,6 +259,73 @@ TEST_F(Tool, StrictReportsARegionThatIsNotADisc)
                                 out_dir().string());
   EXPECT_EQ(repaired.code, 0) << repaired.err;
   EXPECT_NE(repaired.out.find("1 cut into discs"), std::string::npos) << repaired.out;
+}
+
+TEST_F(Tool, APatchThatCannotBeMappedIsReportedAndTheOthersAreWritten)
+{
+  // nefertiti plus a separate triangle: three boundary vertices, no neighbour to merge into.
+  std::ifstream in(data_path("meshes/nefertiti.off"));
+  std::string header;
+  std::size_t nv, nf, ne;
+  in >> header >> nv >> nf >> ne;
+  std::ostringstream body;
+  body << in.rdbuf();
+  // The triangle's three points come first, so nefertiti's face indices shift by 3.
+  std::ostringstream fixed;
+  fixed << "OFF\n" << nv + 3 << ' ' << nf + 1 << " 0\n5 5 5\n6 5 5\n5 6 5\n";
+  std::istringstream rest(body.str());
+  for(std::size_t i = 0; i < nv; ++i) { double x, y, z; rest >> x >> y >> z; fixed << x << ' ' << y << ' ' << z << '\n'; }
+  for(std::size_t j = 0; j < nf; ++j) {
+    std::size_t k, a, b, c;
+    rest >> k >> a >> b >> c;
+    fixed << "3 " << a + 3 << ' ' << b + 3 << ' ' << c + 3 << '\n';
+  }
+  fixed << "3 0 1 2\n";
+  const std::string mesh = write("extra.off", fixed.str());
+
+  const Tool_run partial = run("param " + mesh + " -o " + out_dir().string());
+  EXPECT_EQ(partial.code, 0) << partial.err;
+  // nefertiti is cut automatically (two components: not a disc); only the triangle fails.
+  EXPECT_EQ(partial.err.rfind("diffuv: warning: 1 of ", 0), 0u) << partial.err;
+  EXPECT_NE(partial.err.find(" patches cannot be parameterized (see the table); their faces have no (u,v)\n"),
+            std::string::npos) << partial.err;
+  const std::string obj = slurp(out_dir() / "extra.obj");
+  EXPECT_EQ(obj.find("nan"), std::string::npos);
+  EXPECT_NE(obj.find("\nf 1 2 3\n"), std::string::npos); // the lone triangle, without vt
+  const auto rows = read_csv(out_dir() / "extra.uv.csv");
+  std::set<std::string> mapped;
+  for(std::size_t i = 1; i < rows.size(); ++i) mapped.insert(rows[i][0]);
+  EXPECT_EQ(mapped.size(), nv); // nefertiti's vertices, not the triangle's 0, 1, 2
+  EXPECT_EQ(mapped.count("0") + mapped.count("1") + mapped.count("2"), 0u);
+
+  fs::remove_all(out_dir());
+  const Tool_run strict = run("param " + mesh + " --strict -o " + out_dir().string());
+  EXPECT_EQ(strict.code, 1);
+  EXPECT_NE(strict.err.find(" patches cannot be parameterized; the first: the boundary has fewer than four vertices"),
+            std::string::npos) << strict.err;
+  EXPECT_FALSE(fs::exists(out_dir()));
+
+  const std::string lone = write("lone.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+  const Tool_run none = run("param " + lone + " -o " + out_dir().string());
+  EXPECT_EQ(none.code, 1);
+  EXPECT_EQ(none.err, "diffuv: error: " + lone +
+                          ": 1 of 1 patches cannot be parameterized; the first: the boundary has fewer than four vertices (patch 0)\n");
+  EXPECT_FALSE(fs::exists(out_dir()));
+}
+
+TEST_F(Tool, PatchesOfAPolygonMeshReadBackAsLabels)
+{
+  // cube_quad.off has quads: patches.txt has one line per quad, the file's faces.
+  const Tool_run seg = run("segment " + data_path("meshes/cube_quad.off") + " -o " + out_dir().string());
+  ASSERT_EQ(seg.code, 0) << seg.err;
+  const fs::path labels = out_dir() / "cube_quad.patches.txt";
+  std::ifstream in(labels);
+  std::size_t lines = 0;
+  for(std::string l; std::getline(in, l);) ++lines;
+  EXPECT_EQ(lines, 6u);
+  const Tool_run param = run("param " + data_path("meshes/cube_quad.off") + " --labels " + labels.string() + " -o " +
+                             (dir_ / "p").string());
+  EXPECT_EQ(param.code, 0) << param.err;
 }
 
 TEST_F(Tool, AnOutputPathThatIsAFileIsRefused)

@@ -2,6 +2,7 @@
 // diffusion coordinates, a whole disc mesh.
 #include "test_data.h"
 
+#include <diffuv/metrics/distortion.h>
 #include <diffuv/parameterization/parameterize_disc.h>
 
 #include <CGAL/boost/graph/copy_face_graph.h>
@@ -218,6 +219,41 @@ TEST(DiffusionCoordinates, SwappingOppositeSidesMirrorsTheCoordinate)
     EXPECT_NEAR(b[i].x(), 1. - a[i].x(), 1e-12);
     EXPECT_NEAR(b[i].y(), 1. - a[i].y(), 1e-12);
   }
+}
+
+TEST(DiffusionCoordinates, EveryDistanceBackendGivesTheGridCoordinatesOnAFlatGrid)
+{
+  const std::size_t nx = 10, ny = 6;
+  const Mesh grid = make_grid(nx, ny);
+  Atlas fmm(grid), exact(grid);
+  ASSERT_TRUE(diffuv::parameterize_disc(grid, grid_corners(nx, ny), fmm, nullptr, diffuv::Fibonacci_heap_tag(),
+                                        diffuv::Fmm_distance_tag()).ok());
+  ASSERT_TRUE(diffuv::parameterize_disc(grid, grid_corners(nx, ny), exact, nullptr, diffuv::Fibonacci_heap_tag(),
+                                        diffuv::Exact_distance_tag()).ok());
+  for(std::size_t j = 0; j <= ny; ++j)
+    for(std::size_t i = 0; i <= nx; ++i) {
+      for(const Atlas* a : {&fmm, &exact}) {
+        const Point_2 p = get(a->vertex_uv_map(), grid_vertex(nx, i, j));
+        EXPECT_NEAR(p.x(), double(i) / nx, 1e-9) << i << "," << j;
+        EXPECT_NEAR(p.y(), double(j) / ny, 1e-9) << i << "," << j;
+      }
+    }
+}
+
+TEST(DiffusionCoordinates, FastMarchingRemovesTheCollapsedTrianglesOfEdgePaths)
+{
+  // Measured on mushroom: edge-path distances collapse a few triangles (angle
+  // distortion up to 1e5); distances through triangles do not.
+  const Mesh& mesh = cgal_mesh("mushroom.off");
+  Atlas graph(mesh), fmm(mesh);
+  ASSERT_TRUE(diffuv::parameterize_disc(mesh, {}, graph).ok());
+  ASSERT_TRUE(diffuv::parameterize_disc(mesh, {}, fmm, nullptr, diffuv::Fibonacci_heap_tag(), diffuv::Fmm_distance_tag()).ok());
+  const auto dg = diffuv::measure_distortion(mesh, faces(mesh), mesh.points(), graph.chart_uv_map(0));
+  const auto df = diffuv::measure_distortion(mesh, faces(mesh), mesh.points(), fmm.chart_uv_map(0));
+  EXPECT_GT(dg.angle_max, 100.);
+  EXPECT_LT(df.angle_max, 10.);
+  EXPECT_LT(df.angle_mean, dg.angle_mean);
+  EXPECT_TRUE(df.injective());
 }
 
 TEST(DiffusionCoordinates, AllHeapsGiveTheSameCoordinates)

@@ -317,7 +317,7 @@ TEST(AutomaticPatches, CowManAndGenusThreeElephantAreFullyMapped)
   for(const char* name : {"cow.off", "man.off", "elephant.off"}) expect_everything_mapped(name);
 }
 
-TEST(AutomaticPatches, DeterministicAndIndependentOfVertexOrder)
+TEST(AutomaticPatches, DeterministicAndIndependentOfVertexAndFaceOrder)
 {
   const Mesh& cow = cgal_mesh("cow.off");
   const std::vector<face_descriptor> all(faces(cow).begin(), faces(cow).end());
@@ -339,17 +339,39 @@ TEST(AutomaticPatches, DeterministicAndIndependentOfVertexOrder)
     for(auto v : vertices_around_face(cow.halfedge(f), cow)) fv.push_back(vertex_descriptor(Mesh::size_type(vperm[v.idx()])));
     shuffled.add_face(fv);
   }
+  // And faces in another order too.
+  std::vector<face_descriptor> cow_faces(faces(cow).begin(), faces(cow).end());
+  std::vector<std::size_t> fperm(cow_faces.size());
+  std::iota(fperm.begin(), fperm.end(), 0);
+  std::shuffle(fperm.begin(), fperm.end(), std::mt19937(6));
+  Mesh both;
+  for(std::size_t k = 0; k < vperm.size(); ++k) both.add_vertex(shuffled.point(vertex_descriptor(Mesh::size_type(k))));
+  for(std::size_t k = 0; k < fperm.size(); ++k) {
+    std::vector<vertex_descriptor> fv;
+    for(auto v : vertices_around_face(cow.halfedge(cow_faces[fperm[k]]), cow))
+      fv.push_back(vertex_descriptor(Mesh::size_type(vperm[v.idx()])));
+    both.add_face(fv);
+  }
+  std::vector<int> fourth(num_faces(both), -1), fourth_by_cow_face(num_faces(both));
+  diffuv::voronoi_discs(both, std::vector<face_descriptor>(faces(both).begin(), faces(both).end()), both.points(),
+                        fourth, 0);
+  for(std::size_t k = 0; k < fperm.size(); ++k) fourth_by_cow_face[fperm[k]] = fourth[k];
+
   std::vector<int> third(num_faces(shuffled), -1);
   diffuv::voronoi_discs(shuffled, std::vector<face_descriptor>(faces(shuffled).begin(), faces(shuffled).end()),
                         shuffled.points(), third, 0);
   // Same partition up to relabelling: a one-to-one map between labels.
-  std::map<int, int> forward, backward;
-  for(std::size_t i = 0; i < first.size(); ++i) {
-    auto [it, fresh] = forward.emplace(first[i], third[i]);
-    EXPECT_EQ(it->second, third[i]) << "face " << i;
-    auto [jt, fresh2] = backward.emplace(third[i], first[i]);
-    EXPECT_EQ(jt->second, first[i]) << "face " << i;
-  }
+  auto same_partition = [](const std::vector<int>& a, const std::vector<int>& b) {
+    std::map<int, int> forward, backward;
+    std::size_t mismatches = 0;
+    for(std::size_t i = 0; i < a.size(); ++i) {
+      if(forward.emplace(a[i], b[i]).first->second != b[i]) ++mismatches;
+      if(backward.emplace(b[i], a[i]).first->second != a[i]) ++mismatches;
+    }
+    return mismatches;
+  };
+  EXPECT_EQ(same_partition(first, third), 0u) << "vertex order";
+  EXPECT_EQ(same_partition(first, fourth_by_cow_face), 0u) << "vertex and face order";
 }
 
 TEST(Dijkstra, NearestSourceIsTheSourceThatGivesTheDistance)

@@ -55,7 +55,7 @@ inline void add_patch_options(CLI::App* cmd, Patch_cli_options& o)
                   "painted in a PLY/OFF mesh, else automatic patches for a mesh that is not a disc");
   cmd->add_option("--patches", o.patches,
                   "Automatic patches: how many to start from (more are added until every patch is a disc)")
-      ->check(CLI::Range(1, 10000))
+      ->check(CLI::Range(1, 1000))
       ->capture_default_str();
   cmd->add_flag("--no-split-caps", o.no_split_caps,
                 "Keep caps (patches with one neighbour all around, like a hand or an ear) whole instead of splitting "
@@ -100,6 +100,18 @@ inline diffuv::Segmentation<Mesh> make_patches(const Input_mesh& in, const Patch
   if(!status && o.strict)
     throw diffuv::Input_error(in.labels_path.empty() ? in.path : in.labels_path, 0, status.what());
   return seg;
+}
+
+/// Writes the patch of each face of the mesh file, one per line (a label file
+/// for --labels); a polygon that was triangulated gets its first triangle's patch.
+inline void write_polygon_patches(std::ostream& out, const Input_mesh& in, const diffuv::Segmentation<Mesh>& seg)
+{
+  std::vector<std::size_t> patch_of_polygon(in.report.faces_in_file, diffuv::Segmentation<Mesh>::no_patch);
+  for(auto f : faces(in.mesh)) {
+    std::size_t& p = patch_of_polygon[in.report.file_face[f.idx()]];
+    if(p == diffuv::Segmentation<Mesh>::no_patch) p = seg.face_patch[f.idx()];
+  }
+  for(std::size_t p : patch_of_polygon) out << p << '\n';
 }
 
 /// The name of an output file: the mesh file's stem and an ending.

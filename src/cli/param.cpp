@@ -32,6 +32,7 @@ struct Param_options {
   std::string corners;
   std::string output = "diffuv-out";
   int runs = 1;
+  std::string distance = "graph";
   Patch_cli_options patches;
 };
 
@@ -43,6 +44,15 @@ struct Parameterization {
   std::vector<diffuv::Patch_result<Mesh>> patches;
   double milliseconds = 0;
 };
+
+// Runs `f` with the distance tag named by --distance.
+template <class F>
+auto with_distance(const std::string& name, F f)
+{
+  if(name == "fmm") return f(diffuv::Fmm_distance_tag());
+  if(name == "exact") return f(diffuv::Exact_distance_tag());
+  return f(diffuv::Graph_distance_tag());
+}
 
 bool is_corner_problem(diffuv::Status_code code)
 {
@@ -59,13 +69,15 @@ bool is_corner_problem(diffuv::Status_code code)
 
 // A disc mesh with four given corners: one chart.
 Parameterization parameterize_with_corners(const Input_mesh& in, const std::vector<vertex_descriptor>& corners,
-                                           const std::string& corner_file)
+                                           const std::string& corner_file, const std::string& distance)
 {
   Parameterization result;
   result.atlas = std::make_unique<Atlas>(in.mesh);
   diffuv::Patch_result<Mesh> patch;
   const auto start = std::chrono::steady_clock::now();
-  patch.status = diffuv::parameterize_disc(in.mesh, corners, *result.atlas, &patch.sides);
+  patch.status = with_distance(distance, [&](auto tag) {
+    return diffuv::parameterize_disc(in.mesh, corners, *result.atlas, &patch.sides, diffuv::Fibonacci_heap_tag(), tag);
+  });
   result.milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   if(!patch.status) {
     if(is_corner_problem(patch.status.code)) {
@@ -90,13 +102,16 @@ Parameterization parameterize_with_corners(const Input_mesh& in, const std::vect
 }
 
 // Any mesh: disc patches (from labels, or automatic), each mapped on its own.
-Parameterization parameterize_by_patches(const Input_mesh& in, const Patch_cli_options& options)
+Parameterization parameterize_by_patches(const Input_mesh& in, const Patch_cli_options& options,
+                                         const std::string& distance)
 {
   Parameterization result;
   result.atlas = std::make_unique<Atlas>(in.mesh);
   const auto start = std::chrono::steady_clock::now();
   result.seg = make_patches(in, options, result.patching);
-  result.patches = diffuv::parameterize_patches(in.mesh, result.seg, in.mesh.points(), *result.atlas);
+  result.patches = with_distance(distance, [&](auto tag) {
+    return diffuv::parameterize_patches(in.mesh, result.seg, in.mesh.points(), *result.atlas, tag);
+  });
   result.milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return result;
 }
@@ -133,21 +148,31 @@ void run_param(const Param_options& options)
   Parameterization result;
   std::vector<double> times;
   for(int run = 0; run < options.runs; ++run) {
-    result = options.corners.empty() ? parameterize_by_patches(in, options.patches)
-                                     : parameterize_with_corners(in, corners, options.corners);
+    result = options.corners.empty() ? parameterize_by_patches(in, options.patches, options.distance)
+                                     : parameterize_with_corners(in, corners, options.corners, options.distance);
     times.push_back(result.milliseconds);
   }
   std::sort(times.begin(), times.end());
   const double total_ms = times[times.size() / 2];
   const Atlas& atlas = *result.atlas;
 
+  // A patch that could not be mapped: an error if every one failed or with
+  // --strict (then nothing is written), else a warning and the others' results.
+  std::size_t failed = 0;
+  std::string first_failure;
+  for(std::size_t p = 0; p < result.patches.size(); ++p)
+    if(!result.patches[p].status && failed++ == 0) first_failure = result.patches[p].status.what();
+  if(failed > 0 && (failed == result.patches.size() || options.patches.strict))
+    throw diffuv::Input_error(in.labels_path.empty() ? in.path : in.labels_path, 0,
+                              std::to_string(failed) + " of " + std::to_string(result.patches.size()) +
+                                  " patches cannot be parameterized; the first: " + first_failure);
+
   // Everything is computed before anything is written: all files or none.
   const std::vector<std::string> inputs = {in.path, options.corners, options.patches.labels};
   diffuv::Output_folder out(options.output, inputs);
   diffuv::write_obj(out.open(output_name(in.path, ".obj")), in.mesh, in.mesh.points(), atlas.corner_uv_map());
   diffuv::write_uv_table(out.open(output_name(in.path, ".uv.csv")), atlas);
-  std::ostream& patch_file = out.open(output_name(in.path, ".patches.txt"));
-  for(auto f : faces(in.mesh)) patch_file << result.seg.face_patch[f.idx()] << '\n';
+  write_polygon_patches(out.open(output_name(in.path, ".patches.txt")), in, result.seg);
   out.commit();
 
   // The summary.
@@ -161,7 +186,7 @@ void run_param(const Param_options& options)
               << ' ' << c[3].idx() << " (from " << options.corners << ")\n";
   } else {
     const auto& r = result.patching;
-    std::cout << result.seg.number_of_patches() << " patches: "
+    std::cout << result.seg.number_of_patches() << " patches, " << options.distance << " distances: "
               << (!in.label_source.empty() ? in.label_source
                                            : r.automatic ? "automatic (" + std::to_string(options.patches.patches) + " seeds to start)"
                                                          : "the whole disc")
@@ -173,13 +198,12 @@ void run_param(const Param_options& options)
 
   diffuv::Distortion_summary total;
   double area_sum = 0, angle_sum = 0, areadist_sum = 0, l2_sum = 0, patch_ms = 0;
-  std::size_t vertex_entries = 0, failed = 0;
+  std::size_t vertex_entries = 0;
   for(std::size_t p = 0; p < result.patches.size(); ++p) {
     const auto& r = result.patches[p];
     const std::string label = std::to_string(result.seg.patch_label[p]) +
                               (result.seg.patch_part[p] ? "." + std::to_string(result.seg.patch_part[p]) : "");
     if(!r.status) {
-      ++failed;
       std::printf("%-6zu %6s %8s %8zu  failed: %s\n", p, label.c_str(), "-", result.seg.patch_faces[p].size(),
                   r.status.what().c_str());
       continue;
@@ -209,14 +233,14 @@ void run_param(const Param_options& options)
     total.stretch_l2 = std::sqrt(l2_sum / area_sum);
   }
   print_row("total", "", vertex_entries, total.faces, "", total_ms, total);
-  if(failed > 0) std::cout << failed << " patch(es) failed and have no (u,v): see above\n";
+  if(failed > 0)
+    std::cerr << "diffuv: warning: " << failed << " of " << result.patches.size()
+              << " patches cannot be parameterized (see the table); their faces have no (u,v)\n";
   std::cout << "time: " << total_ms << " ms in all (median of " << options.runs << "), of which "
             << patch_ms << " ms mapping the patches\n";
   std::cout << "wrote";
   for(const auto& p : out.paths()) std::cout << ' ' << p;
   std::cout << '\n';
-  if(failed > 0 && options.patches.strict)
-    throw diffuv::Input_error(in.path, 0, std::to_string(failed) + " patch(es) could not be parameterized");
 }
 
 } // namespace
@@ -239,11 +263,18 @@ void add_param_command(CLI::App& app)
       ->check(CLI::Validator([](const std::string& s) { return s.empty() ? "the output folder name is empty" : ""; },
                              "DIR"))
       ->capture_default_str();
+  cmd->add_option("--distance", options->distance,
+                  "Distance diffused from each side: graph (edge paths, the paper's), fmm (fast marching through "
+                  "triangles) or exact (exact geodesics, CGAL's Surface_mesh_shortest_path; slow)")
+      ->check(CLI::IsMember({"graph", "fmm", "exact"}))
+      ->capture_default_str();
   cmd->add_option("--runs", options->runs, "Run the parameterization N times and report the median time")
       ->check(CLI::Range(1, 1000))
       ->capture_default_str();
-  cmd->footer("Writes OUTPUT/<mesh>.obj (v in input order, one vt per (vertex, patch)), OUTPUT/<mesh>.uv.csv "
-              "(vertex,patch,u,v) and OUTPUT/<mesh>.patches.txt (the patch of each face, one per line).\n"
+  cmd->footer("Writes OUTPUT/<mesh>.obj (v in input order, one vt per distinct (vertex, uv)), OUTPUT/<mesh>.uv.csv "
+              "(vertex,patch,u,v) and OUTPUT/<mesh>.patches.txt (the patch of each face of the mesh file, one per "
+              "line: a label file for --labels).\nA patch that cannot be mapped is listed and warned about; the others "
+              "are written (with --strict, or if none can be mapped: an error).\n"
               "Exit codes: 0 ok, 1 bad input, 2 bad command line, 3 cannot write, 4 internal error.");
   cmd->callback([options]() { run_param(*options); });
 }

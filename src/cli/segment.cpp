@@ -30,8 +30,7 @@ void run_segment(const Segment_options& options)
   for(auto f : faces(in.mesh)) face_patch[f.idx()] = static_cast<int>(seg.face_patch[f.idx()]);
 
   diffuv::Output_folder out(options.output, {in.path, options.patches.labels});
-  std::ostream& labels = out.open(output_name(in.path, ".patches.txt"));
-  for(int p : face_patch) labels << p << '\n';
+  write_polygon_patches(out.open(output_name(in.path, ".patches.txt")), in, seg);
   diffuv::write_labelled_ply(out.open(output_name(in.path, ".patches.ply")), in.mesh, in.mesh.points(), face_patch);
   out.commit();
 
@@ -64,7 +63,7 @@ void add_segment_command(CLI::App& app)
       ->check(CLI::Validator([](const std::string& s) { return s.empty() ? "the output folder name is empty" : ""; },
                              "DIR"))
       ->capture_default_str();
-  cmd->footer("Writes OUTPUT/<mesh>.patches.txt (the patch of each face, one per line: a label file for --labels) "
+  cmd->footer("Writes OUTPUT/<mesh>.patches.txt (the patch of each face of the mesh file, one per line: a label file for --labels) "
               "and OUTPUT/<mesh>.patches.ply (a colour per patch, for MeshLab or Blender; repaint it and pass it "
               "back to diffuv param).\nExit codes: 0 ok, 1 bad input, 2 bad command line, 3 cannot write, 4 internal error.");
   cmd->callback([options]() { run_segment(*options); });

@@ -172,7 +172,8 @@ public:
   const TriangleMesh& mesh() const { return mesh_; }
 
   std::size_t number_of_charts() const { return charts_.size(); }
-  const Chart& chart(std::size_t c) const { return *charts_[c]; }
+  /// Chart `c`. \throws std::out_of_range if there is no such chart.
+  const Chart& chart(std::size_t c) const { return *charts_.at(c); }
 
   /// The (u,v) of local vertex `local` of chart `c`: O(1).
   const Point_2& uv(std::size_t c, Local_index local) const { return charts_[c]->uv[local]; }
@@ -234,9 +235,10 @@ public:
   }
 
   /// The local vertex of chart `c` whose (u,v) is nearest to `q`, in O(log n).
+  /// \throws std::out_of_range if there is no chart `c`
   Local_index nearest_vertex(std::size_t c, const Point_2& q) const
   {
-    const Chart& chart = *charts_[c];
+    const Chart& chart = this->chart(c);
     Incremental_search search(*chart.tree, q, 0., true, Distance(Local_uv_map{chart.uv.data()}));
     return search.begin()->first;
   }
@@ -249,9 +251,10 @@ public:
   /// their faces tested; the walk stops once no unvisited face can be nearer
   /// than the best one (a face's vertices are within the longest uv edge of any
   /// of its points), so the answer is exact, and usually found in the first star.
+  /// \throws std::out_of_range if there is no chart `c`
   Uv_location<TriangleMesh> locate(std::size_t c, const Point_2& q) const
   {
-    const Chart& chart = *charts_[c];
+    const Chart& chart = this->chart(c);
     Incremental_search search(*chart.tree, q, 0., true, Distance(Local_uv_map{chart.uv.data()}));
     double best = std::numeric_limits<double>::infinity();
     std::size_t best_face = 0;

@@ -18,6 +18,7 @@
 #include <boost/graph/graph_traits.hpp>
 #include <boost/property_map/property_map.hpp>
 
+#include <cmath>
 #include <cstddef>
 #include <iomanip>
 #include <ostream>
@@ -39,7 +40,8 @@ namespace diffuv {
 /// 1-based indices. The corners of a face are the targets of the halfedges
 /// of `halfedges_around_face(halfedge(f, tm), tm)`, so the orientation of
 /// the mesh is kept. Two uv of one vertex are the same `vt` only if they are
-/// exactly equal.
+/// exactly equal. A face with a corner whose uv is NaN or infinite (a face in
+/// no chart) is written as `f v v v`, without texture coordinates.
 ///
 /// \tparam TriangleMesh a model of `FaceListGraph` and `VertexListGraph`
 ///         (faces with more than three corners are written as they are)
@@ -83,6 +85,7 @@ void write_obj(std::ostream& out,
   std::vector<std::pair<double, double>> vt;   // in file order
   std::vector<std::size_t> corners;            // (v, vt) pairs, face after face
   std::vector<std::size_t> face_sizes;
+  constexpr std::size_t no_vt = static_cast<std::size_t>(-1);
 
   for(face_descriptor f : faces(tm)) {
     std::size_t size = 0;
@@ -91,6 +94,12 @@ void write_obj(std::ostream& out,
       const auto uv = get(corner_uv, h);
       const double u = CGAL::to_double(uv.x());
       const double v = CGAL::to_double(uv.y());
+      if(!std::isfinite(u) || !std::isfinite(v)) { // no uv here (a face in no chart)
+        corners.push_back(vn);
+        corners.push_back(no_vt);
+        ++size;
+        continue;
+      }
       std::size_t tn = vt.size();
       bool found = false;
       for(const Uv& known : uvs_of_vertex[vn]) {
@@ -138,9 +147,14 @@ void write_obj(std::ostream& out,
 
   std::size_t c = 0;
   for(std::size_t size : face_sizes) {
+    // A face with a corner without uv is written without texture coordinates.
+    bool textured = true;
+    for(std::size_t k = 0; k < size; ++k) textured = textured && corners[c + 2 * k + 1] != no_vt;
     out << 'f';
-    for(std::size_t k = 0; k < size; ++k, c += 2)
-      out << ' ' << corners[c] + 1 << '/' << corners[c + 1] + 1;
+    for(std::size_t k = 0; k < size; ++k, c += 2) {
+      out << ' ' << corners[c] + 1;
+      if(textured) out << '/' << corners[c + 1] + 1;
+    }
     out << '\n';
   }
 }

@@ -7,6 +7,7 @@
 #define DIFFUV_PARAMETERIZATION_DIFFUSION_COORDINATES_H
 
 #include <diffuv/error.h>
+#include <diffuv/graph/distance_tags.h>
 #include <diffuv/graph/heap_tags.h>
 #include <diffuv/graph/multi_source_dijkstra.h>
 #include <diffuv/patches/four_sides.h>
@@ -51,13 +52,15 @@ inline double diffusion_ratio(double d1, double d2)
 ///
 /// \tparam Graph a model of `IncidenceGraph` and `VertexListGraph` with an internal vertex index
 ///         (a `CGAL::Surface_mesh`, a `CGAL::Face_filtered_graph` patch of it, ...)
-/// \tparam HeapTag the heap of the Dijkstra runs, `Fibonacci_heap_tag` by default
-template <class Graph, class HeapTag = Fibonacci_heap_tag>
+/// \tparam HeapTag the heap of the distance runs, `Fibonacci_heap_tag` by default
+/// \tparam DistanceTag `Graph_distance_tag` (default, the paper's), `Fmm_distance_tag` or
+///         `Exact_distance_tag` (distance_tags.h); the last two need a triangle mesh with vertex points
+template <class Graph, class HeapTag = Fibonacci_heap_tag, class DistanceTag = Graph_distance_tag>
 class Diffusion_coordinates {
 public:
   using vertex_descriptor = typename boost::graph_traits<Graph>::vertex_descriptor;
 
-  explicit Diffusion_coordinates(const Graph& g) : graph_(g), dijkstra_(g)
+  explicit Diffusion_coordinates(const Graph& g) : graph_(g), engine_(g)
   {
     for(auto& d : distance_) d.resize(num_vertices(g));
   }
@@ -79,8 +82,8 @@ public:
     for(std::size_t s = 0; s < 4; ++s) {
       if(sources[s]->empty())
         return Status(Status_code::empty_side, std::string("side ") + names[s]);
-      Status status = dijkstra_.run(*sources[s], weight,
-                                    boost::make_iterator_property_map(distance_[s].begin(), index));
+      Status status = engine_.run(*sources[s], weight,
+                                  boost::make_iterator_property_map(distance_[s].begin(), index));
       if(!status) return status;
     }
 
@@ -108,18 +111,19 @@ public:
 
 private:
   const Graph& graph_;
-  Multi_source_dijkstra<Graph, HeapTag> dijkstra_;
+  internal::Distance_engine<Graph, HeapTag, DistanceTag> engine_;
   std::array<std::vector<double>, 4> distance_;
   std::size_t both_sides_ = 0;
 };
 
 /// Computes diffusion coordinates on a disc patch (one-shot form of `Diffusion_coordinates`).
-template <class Graph, class WeightMap, class UvMap, class HeapTag = Fibonacci_heap_tag>
+template <class Graph, class WeightMap, class UvMap, class HeapTag = Fibonacci_heap_tag,
+          class DistanceTag = Graph_distance_tag>
 Status diffusion_coordinates(const Graph& g,
                              const Four_sides<typename boost::graph_traits<Graph>::vertex_descriptor>& sides,
-                             WeightMap weight, UvMap uv, HeapTag = HeapTag())
+                             WeightMap weight, UvMap uv, HeapTag = HeapTag(), DistanceTag = DistanceTag())
 {
-  Diffusion_coordinates<Graph, HeapTag> coordinates(g);
+  Diffusion_coordinates<Graph, HeapTag, DistanceTag> coordinates(g);
   return coordinates.compute(sides, weight, uv);
 }
 

@@ -29,14 +29,15 @@ namespace diffuv {
 /// \param corners four boundary vertices, or none to choose them automatically
 /// \param atlas receives one chart holding every face and vertex of `tm`
 /// \param sides if not null, receives the four sides used
+/// \tparam DistanceTag the distance diffused from each side (distance_tags.h), graph by default
 /// \returns the first problem met (not a disc, bad corners, ...) or `ok`; on failure
 ///          `atlas` is unchanged
-template <class TriangleMesh, class HeapTag = Fibonacci_heap_tag>
+template <class TriangleMesh, class HeapTag = Fibonacci_heap_tag, class DistanceTag = Graph_distance_tag>
 Status parameterize_disc(const TriangleMesh& tm,
                          const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& corners,
                          Uv_atlas<TriangleMesh>& atlas,
                          Four_sides<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>* sides = nullptr,
-                         HeapTag = HeapTag())
+                         HeapTag = HeapTag(), DistanceTag = DistanceTag())
 {
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
   using Point_2 = typename Uv_atlas<TriangleMesh>::Point_2;
@@ -56,7 +57,7 @@ Status parameterize_disc(const TriangleMesh& tm,
 
   auto index = get(boost::vertex_index, tm);
   std::vector<Point_2> uv_of(num_vertices(tm));
-  Diffusion_coordinates<TriangleMesh, HeapTag> coordinates(tm);
+  Diffusion_coordinates<TriangleMesh, HeapTag, DistanceTag> coordinates(tm);
   status = coordinates.compute(four, edge_length_map(tm), boost::make_iterator_property_map(uv_of.begin(), index));
   if(!status) return status;
 

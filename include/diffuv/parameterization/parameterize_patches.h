@@ -32,17 +32,19 @@ struct Patch_result {
 /// Parameterizes every patch of `seg` as a chart of `atlas`: canonical sides
 /// from the neighbouring regions (`region_sides()`), then the diffusion
 /// coordinates on the patch (a `CGAL::Face_filtered_graph`), with edge lengths
-/// computed once for the whole mesh.
+/// computed once for the whole mesh, and distances of the kind `DistanceTag`
+/// (`Graph_distance_tag`, the paper's, by default; `Fmm_distance_tag`; `Exact_distance_tag`).
 ///
 /// A patch that fails (not a disc, too short a boundary) gets no chart; the
 /// others are still mapped.
 ///
 /// \returns #P results, one per patch
-template <class TriangleMesh, class VertexPointMap, class HeapTag = Fibonacci_heap_tag>
+template <class TriangleMesh, class VertexPointMap, class DistanceTag = Graph_distance_tag,
+          class HeapTag = Fibonacci_heap_tag>
 std::vector<Patch_result<TriangleMesh>> parameterize_patches(const TriangleMesh& tm,
                                                              const Segmentation<TriangleMesh>& seg,
                                                              VertexPointMap vpm, Uv_atlas<TriangleMesh>& atlas,
-                                                             HeapTag = HeapTag())
+                                                             DistanceTag = DistanceTag(), HeapTag = HeapTag())
 {
   using Patch = CGAL::Face_filtered_graph<TriangleMesh>;
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
@@ -60,7 +62,7 @@ std::vector<Patch_result<TriangleMesh>> parameterize_patches(const TriangleMesh&
     const Patch patch(tm, seg.patch_faces[p]);
     auto pindex = get(boost::vertex_index, patch);
     std::vector<Point_2> uv(num_vertices(patch));
-    Diffusion_coordinates<Patch, HeapTag> coordinates(patch);
+    Diffusion_coordinates<Patch, HeapTag, DistanceTag> coordinates(patch);
     r.status = coordinates.compute(r.sides, lengths, boost::make_iterator_property_map(uv.begin(), pindex));
     if(!r.status) continue;
 

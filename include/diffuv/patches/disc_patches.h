@@ -73,7 +73,7 @@ Status disc_patches(const TriangleMesh& tm, std::vector<int> face_labels, Vertex
   for(std::size_t p = 0; p < seg.number_of_patches(); ++p) {
     if(check_patch_disc(tm, seg, p)) continue;
     if(options.strict) { r.not_discs.push_back(p); continue; }
-    const std::size_t pieces = cut_into_discs(tm, seg, p, vpm);
+    const std::size_t pieces = cut_into_discs(tm, seg, p, vpm, options.automatic);
     if(pieces > 1) {
       ++r.cut;
       p += pieces - 1;

@@ -32,6 +32,10 @@
 
 namespace diffuv {
 
+/// The point type of a vertex point map.
+template <class VertexPointMap>
+using Point_of = typename boost::property_traits<VertexPointMap>::value_type;
+
 /// Every face of a mesh assigned to a patch.
 template <class TriangleMesh>
 struct Segmentation {
@@ -295,16 +299,26 @@ Status check_patch_disc(const TriangleMesh& tm, const Segmentation<TriangleMesh>
 ///
 /// \param face_labels #F entries, changed in place
 /// \param ignore_label faces with this label are left alone, and no face takes it
+/// \param order the faces to visit, in this order (default: `faces(tm)`)
 /// \returns how many faces changed label
 template <class TriangleMesh>
-std::size_t smooth_region_borders(const TriangleMesh& tm, std::vector<int>& face_labels, std::size_t passes = 3,
-                                  int ignore_label = std::numeric_limits<int>::min())
+std::size_t smooth_region_borders(
+    const TriangleMesh& tm, std::vector<int>& face_labels, std::size_t passes = 3,
+    int ignore_label = std::numeric_limits<int>::min(),
+    const std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>* order = nullptr)
 {
   auto findex = get(boost::face_index, tm);
+  const std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> all =
+      order ? std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>() :
+              std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>(faces(tm).begin(), faces(tm).end());
+  const auto& visit = order ? *order : all;
   std::size_t changed = 0;
+  // Faces are visited one after the other (a move can make the next face an
+  // ear): pass an `order` that does not depend on the face numbering for a
+  // result that does not either.
   for(std::size_t pass = 0; pass < passes; ++pass) {
     std::size_t this_pass = 0;
-    for(auto f : faces(tm)) {
+    for(auto f : visit) {
       const int own = face_labels[get(findex, f)];
       if(own == ignore_label) continue; // outside the faces being cut
       int across[3];
@@ -343,10 +357,10 @@ struct Voronoi_options {
 /// vertices merged into a neighbour, and a new seed in each non-disc patch
 /// (its face farthest from the seeds), until every patch is a disc.
 ///
-/// Deterministic: the first seed is an end of the region's diameter (the face
-/// farthest from the face farthest from the first face), then farthest-point sampling, so the result does not depend on the
-/// coordinate axes, and another vertex or face order changes it only when two
-/// faces are exactly equally far.
+/// Deterministic: the first seed is the face farthest from the region's
+/// centroid, then farthest-point sampling, so the result does not depend on the
+/// vertex or face order, nor on the mesh's position or orientation (except
+/// when two faces are exactly equally far).
 ///
 /// \param region the faces to cut (a connected set)
 /// \param face_labels #F entries: receives, for the faces of `region`, labels
@@ -395,13 +409,32 @@ std::size_t voronoi_discs(const TriangleMesh& tm,
   };
   auto all = [](std::size_t) { return true; };
 
-  // Two sweeps: the face farthest from the face farthest from the first one,
-  // an end of the region's diameter, whatever face comes first.
-  std::vector<std::size_t> seeds = {0};
-  for(int sweep = 0; sweep < 2; ++sweep) {
-    dijkstra.run(seeds, weight, dmap, omap);
-    seeds = {farthest(all)};
+  // The first seed: the face whose centroid is farthest from the region's
+  // area-weighted centroid (lowest index on a tie) — the same face whatever
+  // the vertex or face order, the position or the orientation of the mesh.
+  double cx = 0, cy = 0, cz = 0, area = 0;
+  std::vector<Point_of<VertexPointMap>> centroids;
+  for(std::size_t i = 0; i < n; ++i) {
+    centroids.push_back(centroid(region[i]));
+    const double a = CGAL::to_double(CGAL::Polygon_mesh_processing::face_area(region[i], tm, CGAL::parameters::vertex_point_map(vpm)));
+    cx += a * CGAL::to_double(centroids[i].x());
+    cy += a * CGAL::to_double(centroids[i].y());
+    cz += a * CGAL::to_double(centroids[i].z());
+    area += a;
   }
+  if(area > 0) { cx /= area; cy /= area; cz /= area; }
+  std::size_t first_seed = 0;
+  double far = -1;
+  for(std::size_t i = 0; i < n; ++i) {
+    const double dx = CGAL::to_double(centroids[i].x()) - cx, dy = CGAL::to_double(centroids[i].y()) - cy,
+                 dz = CGAL::to_double(centroids[i].z()) - cz;
+    const double d = dx * dx + dy * dy + dz * dz;
+    if(d > far || (d == far && get(findex, region[i]) < get(findex, region[first_seed]))) {
+      far = d;
+      first_seed = i;
+    }
+  }
+  std::vector<std::size_t> seeds = {first_seed};
   const std::size_t target = options.patches > 0 ? options.patches : 1;
 
   while(true) {
@@ -413,7 +446,15 @@ std::size_t voronoi_discs(const TriangleMesh& tm,
     // Labels of the region's faces by cell; faces outside hidden behind one sentinel.
     std::vector<int> labels(num_faces(tm), std::numeric_limits<int>::min());
     for(std::size_t i = 0; i < n; ++i) labels[get(findex, region[i])] = static_cast<int>(origin[i]);
-    smooth_region_borders(tm, labels);
+    // Visit faces farthest from the seeds first (an order of the surface, not of the numbering).
+    std::vector<std::size_t> by_distance(n);
+    std::iota(by_distance.begin(), by_distance.end(), 0);
+    std::sort(by_distance.begin(), by_distance.end(), [&](std::size_t a, std::size_t b) {
+      return distance[a] != distance[b] ? distance[a] > distance[b] : origin[a] < origin[b];
+    });
+    std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> order;
+    for(std::size_t i : by_distance) order.push_back(region[i]);
+    smooth_region_borders(tm, labels, 3, std::numeric_limits<int>::min(), &order);
     Segmentation<TriangleMesh> seg = patches_from_labels(tm, labels, vpm);
     merge_small_patches(tm, labels, seg, vpm);
 

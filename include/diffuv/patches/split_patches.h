@@ -164,13 +164,17 @@ bool split_cap(const TriangleMesh& tm, Segmentation<TriangleMesh>& seg, std::siz
 
 /// Cuts non-disc patch `p` into disc pieces with `voronoi_discs()` (parts 1, 2, ...).
 /// \returns the number of pieces (1: nothing was cut)
+///
+/// The number of seeds to start from is `options.patches` times the share of
+/// the mesh's faces in the patch, at least 2: a band needs two pieces, a whole
+/// closed mesh labelled as one region as many as automatic patches would use.
 template <class TriangleMesh, class VertexPointMap>
-std::size_t cut_into_discs(const TriangleMesh& tm, Segmentation<TriangleMesh>& seg, std::size_t p, VertexPointMap vpm)
+std::size_t cut_into_discs(const TriangleMesh& tm, Segmentation<TriangleMesh>& seg, std::size_t p, VertexPointMap vpm,
+                           Voronoi_options options = Voronoi_options())
 {
   auto findex = get(boost::face_index, tm);
   std::vector<int> cells(num_faces(tm), -1);
-  Voronoi_options options;
-  options.patches = 2;
+  options.patches = std::max<std::size_t>(2, options.patches * seg.patch_faces[p].size() / num_faces(tm));
   voronoi_discs(tm, seg.patch_faces[p], vpm, cells, 0, options);
   std::map<int, std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>> by_cell;
   for(auto f : seg.patch_faces[p]) by_cell[cells[get(findex, f)]].push_back(f);
