@@ -116,8 +116,9 @@ Parameterization parameterize_by_patches(const Input_mesh& in, const Patch_cli_o
   return result;
 }
 
-std::string corner_rule(const diffuv::Side_report& r)
+std::string corner_rule(const diffuv::Side_report& r, bool given)
 {
+  if(given) return "given";
   if(r.equal_arcs) return "arcs";
   std::string s = std::to_string(r.runs) + " runs";
   if(r.merged) s += " -" + std::to_string(r.merged);
@@ -128,9 +129,10 @@ std::string corner_rule(const diffuv::Side_report& r)
 void print_row(const std::string& name, const std::string& label, std::size_t vertices, std::size_t faces,
                const std::string& corners, double ms, const diffuv::Distortion_summary& d)
 {
-  std::printf("%-6s %6s %8zu %8zu %-10s %8.2f %7zu %5zu %8zu %9.4f %9.4g %9.4f %9.4g %8.4g %9s\n", name.c_str(),
-              label.c_str(), vertices, faces, corners.c_str(), ms, d.flipped, d.degenerate, d.overlapping_pairs,
-              d.angle_mean, d.angle_max, d.area_mean, d.area_max, d.stretch_l2, d.injective() ? "yes" : "no");
+  std::printf("%-6s %6s %8zu %8zu %-10s %8.2f %7zu %5zu %8zu %9.4f %9.4g %9.4f %9.4g %8.4g %9.4g %9s\n",
+              name.c_str(), label.c_str(), vertices, faces, corners.c_str(), ms, d.flipped, d.degenerate,
+              d.overlapping_pairs, d.angle_mean, d.angle_max, d.area_mean, d.area_max, d.stretch_l2, d.stretch_linf,
+              d.injective() ? "yes" : "no");
 }
 
 void run_param(const Param_options& options)
@@ -192,9 +194,9 @@ void run_param(const Param_options& options)
                                                          : "the whole disc")
               << "; " << r.merged << " merged, " << r.cut << " cut into discs, " << r.caps_split << " caps split\n";
   }
-  std::printf("%-6s %6s %8s %8s %-10s %8s %7s %5s %8s %9s %9s %9s %9s %8s %9s\n", "patch", "label", "vertices", "faces",
-              "corners", "time_ms", "flipped", "degen", "overlaps", "angle_avg", "angle_max", "area_avg", "area_max",
-              "L2", "injective");
+  std::printf("%-6s %6s %8s %8s %-10s %8s %7s %5s %8s %9s %9s %9s %9s %8s %9s %9s\n", "patch", "label", "vertices",
+              "faces", "corners", "time_ms", "flipped", "degen", "overlaps", "angle_avg", "angle_max", "area_avg",
+              "area_max", "L2", "Linf", "injective");
 
   diffuv::Distortion_summary total;
   double area_sum = 0, angle_sum = 0, areadist_sum = 0, l2_sum = 0, patch_ms = 0;
@@ -210,7 +212,7 @@ void run_param(const Param_options& options)
     }
     const auto& chart = atlas.chart(r.chart);
     const auto d = diffuv::measure_distortion(in.mesh, chart.faces, in.mesh.points(), atlas.chart_uv_map(r.chart));
-    print_row(std::to_string(p), label, chart.vertices.size(), chart.faces.size(), corner_rule(r.side_report),
+    print_row(std::to_string(p), label, chart.vertices.size(), chart.faces.size(), corner_rule(r.side_report, !options.corners.empty()),
               r.milliseconds, d);
     double area = 0;
     for(auto f : chart.faces) area += CGAL::Polygon_mesh_processing::face_area(f, in.mesh);
@@ -221,6 +223,7 @@ void run_param(const Param_options& options)
     total.overlapping_pairs += d.overlapping_pairs;
     total.angle_max = std::max(total.angle_max, d.angle_max);
     total.area_max = std::max(total.area_max, d.area_max);
+    total.stretch_linf = std::max(total.stretch_linf, d.stretch_linf);
     area_sum += area;
     angle_sum += d.angle_mean * area;
     areadist_sum += d.area_mean * area;
