@@ -176,15 +176,8 @@ private:
   using Vec2 = internal::Fmm_vec2;
   using Vec3 = internal::Fmm_vec3;
 
-  struct Node {
-    double distance;
-    Index vertex;
-  };
-  // Boost.Heap heaps are max-heaps: "greater" puts the smallest distance on top.
-  struct Farther {
-    bool operator()(const Node& a, const Node& b) const { return a.distance > b.distance; }
-  };
-  using Heap = typename internal::Heap_selector<HeapTag, Node, Farther>::type;
+  using Node = internal::Distance_node<Index>;
+  using Heap = internal::Min_distance_heap<HeapTag, Index>;
   using Handle = typename Heap::handle_type;
   enum State : std::uint8_t { unseen, queued, accepted };
 

@@ -45,6 +45,23 @@ struct Heap_selector<Quaternary_heap_tag, Node, Compare> {
                                        boost::heap::compare<Compare>>;
 };
 
+/// A heap entry of the distance algorithms: a tentative distance and its vertex.
+template <class Vertex>
+struct Distance_node {
+  double distance;
+  Vertex vertex;
+};
+
+/// Boost.Heap heaps are max-heaps: "farther is lower" puts the smallest distance on top.
+struct Farther {
+  template <class Node>
+  bool operator()(const Node& a, const Node& b) const { return a.distance > b.distance; }
+};
+
+/// The min-heap of tentative distances of the heap chosen by `HeapTag`.
+template <class HeapTag, class Vertex>
+using Min_distance_heap = typename Heap_selector<HeapTag, Distance_node<Vertex>, Farther>::type;
+
 } // namespace internal
 } // namespace diffuv
 

@@ -60,15 +60,8 @@ public:
   using vertex_descriptor = typename boost::graph_traits<Graph>::vertex_descriptor;
 
 private:
-  struct Node {
-    double distance;
-    vertex_descriptor vertex;
-  };
-  // Boost.Heap heaps are max-heaps: "greater" puts the smallest distance on top.
-  struct Farther {
-    bool operator()(const Node& a, const Node& b) const { return a.distance > b.distance; }
-  };
-  using Heap = typename internal::Heap_selector<HeapTag, Node, Farther>::type;
+  using Node = internal::Distance_node<vertex_descriptor>;
+  using Heap = internal::Min_distance_heap<HeapTag, vertex_descriptor>;
   using Handle = typename Heap::handle_type;
   enum State : std::uint8_t { unseen, queued, settled };
 
