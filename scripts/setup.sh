@@ -11,6 +11,8 @@ packages=(
   libeigen3-dev                        # linear algebra for CGAL's parameterizers
   libgtest-dev                         # tests
   libcli11-dev                         # the diffuv command line
+  libstb-dev                           # stb_image_write: PNG textures and renders
+  python3                              # scripts/height_labels.py, and XML checks in tests
 )
 
 missing=()

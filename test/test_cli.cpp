@@ -208,6 +208,12 @@ TEST_F(Tool, ClosedMeshesAreCutIntoPatchesAndEveryVertexIsMapped)
   }
   EXPECT_EQ(mapped.size(), diffuv_test::cgal_mesh("cow.off").number_of_vertices());
   EXPECT_GT(rows.size() - 1, mapped.size()); // patch-border vertices have a row per patch
+
+  // The textured OBJ and the picture.
+  EXPECT_EQ(slurp(out_dir() / "cow.obj").rfind("mtllib cow.mtl\n", 0), 0u);
+  EXPECT_NE(slurp(out_dir() / "cow.mtl").find("map_Kd cow.checker.png"), std::string::npos);
+  for(const char* png : {"cow.png", "cow.checker.png"})
+    EXPECT_EQ(slurp(out_dir() / png).substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8)) << png;
 }
 
 TEST_F(Tool, SegmentWritesPatchesThatReadBackAsLabelsAndAsPaint)

@@ -6,10 +6,13 @@
 #include <diffuv/io/atomic_file.h>
 #include <diffuv/io/selection_file.h>
 #include <diffuv/io/write_obj.h>
+#include <diffuv/io/write_svg.h>
+#include <diffuv/io/write_texture.h>
 #include <diffuv/io/write_uv_table.h>
 #include <diffuv/metrics/distortion.h>
 #include <diffuv/parameterization/parameterize_disc.h>
 #include <diffuv/parameterization/parameterize_patches.h>
+#include <diffuv/render/render_mesh.h>
 
 #include <CGAL/Polygon_mesh_processing/measure.h>
 
@@ -19,6 +22,7 @@
 #include <iostream>
 #include <memory>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace diffuv_cli {
@@ -33,8 +37,39 @@ struct Param_options {
   std::string output = "diffuv-out";
   int runs = 1;
   std::string distance = "graph";
+  std::string view = "iso";
+  std::string size = "800x600";
+  int isolines = 10;
+  bool svg = false;
   Patch_cli_options patches;
 };
+
+// --size WxH
+std::pair<int, int> parse_size(const std::string& s)
+{
+  const auto x = s.find('x');
+  int w = 0, h = 0;
+  try {
+    if(x != std::string::npos) {
+      w = std::stoi(s.substr(0, x));
+      h = std::stoi(s.substr(x + 1));
+    }
+  } catch(const std::exception&) {
+  }
+  if(w < 16 || h < 16 || w > 8192 || h > 8192)
+    throw CLI::ValidationError("--size", "expects WxH with 16 <= W, H <= 8192, e.g. 800x600, not " + s);
+  return {w, h};
+}
+
+diffuv::View parse_view(const std::string& s)
+{
+  if(s == "front") return diffuv::View::front;
+  if(s == "back") return diffuv::View::back;
+  if(s == "left") return diffuv::View::left;
+  if(s == "right") return diffuv::View::right;
+  if(s == "top") return diffuv::View::top;
+  return diffuv::View::iso;
+}
 
 // One parameterization of the whole mesh: its patches and its atlas.
 struct Parameterization {
@@ -137,6 +172,7 @@ void print_row(const std::string& name, const std::string& label, std::size_t ve
 
 void run_param(const Param_options& options)
 {
+  parse_size(options.size); // a bad --size is a usage error before any work
   if(!options.corners.empty() && (!options.patches.labels.empty()))
     throw CLI::ValidationError("--corners", "applies to a disc mesh without --labels");
   const std::string mesh_path = options.mesh.empty() ? default_mesh("cow.off") : options.mesh;
@@ -172,9 +208,29 @@ void run_param(const Param_options& options)
   // Everything is computed before anything is written: all files or none.
   const std::vector<std::string> inputs = {in.path, options.corners, options.patches.labels};
   diffuv::Output_folder out(options.output, inputs);
-  diffuv::write_obj(out.open(output_name(in.path, ".obj")), in.mesh, in.mesh.points(), atlas.corner_uv_map());
+  // A textured OBJ: any viewer shows the map as a checkerboard on the mesh.
+  const std::string texture = output_name(in.path, ".checker.png");
+  diffuv::write_obj(out.open(output_name(in.path, ".obj")), in.mesh, in.mesh.points(), atlas.corner_uv_map(),
+                    output_name(in.path, ".mtl"), "diffuv_checker");
+  diffuv::write_mtl(out.open(output_name(in.path, ".mtl")), "diffuv_checker", texture);
+  diffuv::write_png(out.open(texture), 512, 512, diffuv::checker_texture(512, 8));
+  if(options.svg)
+    for(std::size_t p = 0; p < result.patches.size(); ++p)
+      if(result.patches[p].status)
+        diffuv::write_uv_layout_svg(out.open(output_name(in.path, ".patch" + std::to_string(p) + ".svg")), atlas,
+                                    result.patches[p].chart, &result.patches[p].sides);
   diffuv::write_uv_table(out.open(output_name(in.path, ".uv.csv")), atlas);
   write_polygon_patches(out.open(output_name(in.path, ".patches.txt")), in, result.seg);
+  // A picture of the result: patch colours and u, v isolines (the paper's Figure 10).
+  diffuv::Render_options look;
+  std::tie(look.width, look.height) = parse_size(options.size);
+  look.view = parse_view(options.view);
+  look.isolines = options.isolines;
+  const diffuv::Image image = diffuv::render_mesh(
+      in.mesh, in.mesh.points(),
+      [&](Mesh::Face_index f) { return diffuv::patch_color(result.seg.face_patch[f.idx()]); }, atlas.corner_uv_map(),
+      look);
+  diffuv::write_png(out.open(output_name(in.path, ".png")), image, output_name(in.path, ".png"));
   out.commit();
 
   // The summary.
@@ -271,11 +327,22 @@ void add_param_command(CLI::App& app)
                   "triangles) or exact (exact geodesics, CGAL's Surface_mesh_shortest_path; slow)")
       ->check(CLI::IsMember({"graph", "fmm", "exact"}))
       ->capture_default_str();
+  cmd->add_option("--view", options->view, "View of the picture: front, back, left, right, top or iso")
+      ->check(CLI::IsMember({"front", "back", "left", "right", "top", "iso"}))
+      ->capture_default_str();
+  cmd->add_option("--size", options->size, "Size of the picture, WxH pixels")->capture_default_str();
+  cmd->add_option("--isolines", options->isolines, "u and v isolines every 1/N in the picture (0: none)")
+      ->check(CLI::Range(0, 1000))
+      ->capture_default_str();
+  cmd->add_flag("--svg", options->svg, "Also write each patch's uv layout as OUTPUT/<mesh>.patch<N>.svg (flipped "
+                                      "triangles in red, the four sides in colour)");
   cmd->add_option("--runs", options->runs, "Run the parameterization N times and report the median time")
       ->check(CLI::Range(1, 1000))
       ->capture_default_str();
   cmd->footer("Writes OUTPUT/<mesh>.obj (v in input order, one vt per distinct (vertex, uv)), OUTPUT/<mesh>.uv.csv "
-              "(vertex,patch,u,v) and OUTPUT/<mesh>.patches.txt (the patch of each face of the mesh file, one per "
+              "(vertex,patch,u,v), OUTPUT/<mesh>.mtl and <mesh>.checker.png (the OBJ's material and texture), "
+              "OUTPUT/<mesh>.png (the mesh with its patches and u, v isolines) and "
+              "OUTPUT/<mesh>.patches.txt (the patch of each face of the mesh file, one per "
               "line: a label file for --labels).\nA patch that cannot be mapped is listed and warned about; the others "
               "are written (with --strict, or if none can be mapped: an error).\n"
               "Exit codes: 0 ok, 1 bad input, 2 bad command line, 3 cannot write, 4 internal error.");

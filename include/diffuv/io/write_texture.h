@@ -1,0 +1,193 @@
+// diffuv: a generated checkerboard texture, written as PNG, and the OBJ
+// material (MTL) that puts it on a mesh.
+//
+// A checkerboard on the unit square is the usual way to look at a
+// parameterization: stretched, sheared or folded cells show where the map
+// distorts. `write_obj(path, ..., "mesh.mtl", "checker")`, `write_mtl(...,
+// "checker", "checker.png")` and `write_png_file("checker.png", ...)` give a
+// textured OBJ that any viewer (MeshLab, Blender) opens.
+//
+// PNG encoding uses stb_image_write (Debian package libstb-dev), compiled into
+// every translation unit that includes this header as static functions, so
+// that no separate implementation file is needed and two headers of diffuv
+// using it (see render/) can share one copy through the same guard.
+#ifndef DIFFUV_IO_WRITE_TEXTURE_H
+#define DIFFUV_IO_WRITE_TEXTURE_H
+
+#include <diffuv/error.h>
+#include <diffuv/io/atomic_file.h>
+
+#ifndef DIFFUV_STB_IMAGE_WRITE_INCLUDED
+#define DIFFUV_STB_IMAGE_WRITE_INCLUDED
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
+#pragma GCC diagnostic ignored "-Wunused-function"
+#pragma GCC diagnostic ignored "-Wunused-variable"
+#pragma GCC diagnostic ignored "-Wunused-parameter"
+#pragma GCC diagnostic ignored "-Wsign-compare"
+#pragma GCC diagnostic ignored "-Wimplicit-fallthrough"
+#pragma GCC diagnostic ignored "-Wtype-limits"
+#define STB_IMAGE_WRITE_STATIC
+#define STB_IMAGE_WRITE_IMPLEMENTATION
+#include <stb/stb_image_write.h>
+// stb's implementation section has no guard of its own: a later plain include
+// of stb_image_write.h (by the user) must not compile it a second time.
+#undef STB_IMAGE_WRITE_IMPLEMENTATION
+#undef STB_IMAGE_WRITE_STATIC
+#pragma GCC diagnostic pop
+#endif
+
+#include <array>
+#include <cstddef>
+#include <ostream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace diffuv {
+
+/// An RGB colour, 8 bits per channel.
+using Rgb = std::array<unsigned char, 3>;
+
+/// The colours of `checker_texture()`.
+struct Checker_colours {
+  static constexpr Rgb light = {235, 235, 225}; ///< cells whose row + column is even (the top-left cell)
+  static constexpr Rgb dark = {50, 90, 170};    ///< the other cells
+  static constexpr Rgb grid = {20, 20, 20};     ///< the lines between cells and around the image
+};
+
+/// Returns a checkerboard image: `size` x `size` RGB pixels, `cells` x `cells`
+/// cells of alternating `Checker_colours::light` and `Checker_colours::dark`,
+/// with a thin `Checker_colours::grid` line along every cell border.
+///
+/// Pixels are row by row from the top (row 0 is v = 1 once mapped, as in
+/// PNG), 3 bytes each: `3 * (y * size + x) + channel`. Pixel column x lies in
+/// cell `x * cells / size` (integer division), likewise rows, so cells differ
+/// by at most one pixel when `cells` does not divide `size`. A grid line is
+/// `max(1, size / 512)` pixels wide on each side of a cell border, so it is
+/// one pixel on the image's own border and two between cells at 512 pixels.
+///
+/// \param size the width and height in pixels
+/// \param cells the number of cells along each side
+/// \returns `3 * size * size` bytes
+/// \throws std::invalid_argument unless `1 <= cells` and `cells <= size`
+inline std::vector<unsigned char> checker_texture(int size = 512, int cells = 8)
+{
+  if(cells < 1 || size < cells)
+    throw std::invalid_argument("checker_texture: need 1 <= cells <= size (cells " + std::to_string(cells) +
+                                ", size " + std::to_string(size) + ")");
+  const int line = size / 512 > 1 ? size / 512 : 1;
+  // Per column (and row, the image is square): its cell, and whether it is on a grid line.
+  std::vector<int> cell(size);
+  std::vector<char> on_line(size);
+  for(int x = 0; x < size; ++x) {
+    const int k = static_cast<int>(static_cast<long long>(x) * cells / size);
+    const int begin = static_cast<int>((static_cast<long long>(k) * size + cells - 1) / cells); // first column of cell k
+    const int end = static_cast<int>((static_cast<long long>(k + 1) * size + cells - 1) / cells); // one past its last
+    cell[x] = k;
+    on_line[x] = (x - begin < line || end - 1 - x < line) ? 1 : 0;
+  }
+  std::vector<unsigned char> rgb(static_cast<std::size_t>(size) * size * 3);
+  for(int y = 0; y < size; ++y)
+    for(int x = 0; x < size; ++x) {
+      const Rgb& c = (on_line[x] || on_line[y]) ? Checker_colours::grid
+                     : ((cell[x] + cell[y]) % 2 == 0 ? Checker_colours::light : Checker_colours::dark);
+      unsigned char* p = &rgb[3 * (static_cast<std::size_t>(y) * size + x)];
+      p[0] = c[0];
+      p[1] = c[1];
+      p[2] = c[2];
+    }
+  return rgb;
+}
+
+namespace internal {
+
+// stb_image_write's output callback: appends to a std::ostream.
+inline void stb_write_to_ostream(void* context, void* data, int size)
+{
+  static_cast<std::ostream*>(context)->write(static_cast<const char*>(data), size);
+}
+
+// Throws std::invalid_argument unless rgb holds a width x height RGB image.
+inline void check_rgb_image(const char* function, int width, int height, const std::vector<unsigned char>& rgb)
+{
+  if(width <= 0 || height <= 0)
+    throw std::invalid_argument(std::string(function) + ": the image size must be positive");
+  if(rgb.size() != static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 3)
+    throw std::invalid_argument(std::string(function) + ": " + std::to_string(rgb.size()) + " bytes for a " +
+                                std::to_string(width) + " x " + std::to_string(height) + " RGB image");
+}
+
+} // namespace internal
+
+/// Writes an RGB image as PNG to `out`.
+///
+/// \param out the stream (opened in binary mode if it is a file)
+/// \param width, height the size in pixels
+/// \param rgb `3 * width * height` bytes, row by row from the top
+/// \returns whether stb_image_write encoded the image (it fails only when out of memory);
+///          the stream's state tells whether writing succeeded
+/// \throws std::invalid_argument if a size is not positive or `rgb` has the wrong size
+inline bool write_png(std::ostream& out, int width, int height, const std::vector<unsigned char>& rgb)
+{
+  internal::check_rgb_image("write_png", width, height, rgb);
+  return stbi_write_png_to_func(&internal::stb_write_to_ostream, &out, width, height, 3, rgb.data(), width * 3) != 0;
+}
+
+/// Writes an RGB image as the PNG file `path`, through `Atomic_output_file`:
+/// on error, an existing file at `path` is left as it was.
+///
+/// \param path the file; its folder must exist
+/// \param width, height the size in pixels
+/// \param rgb `3 * width * height` bytes, row by row from the top (as from `checker_texture()`)
+/// \throws std::invalid_argument if a size is not positive or `rgb` has the wrong size
+///         (nothing is written)
+/// \throws Output_error naming `path` if the file cannot be created, encoded or written
+inline void write_png_file(const std::string& path, int width, int height, const std::vector<unsigned char>& rgb)
+{
+  internal::check_rgb_image("write_png_file", width, height, rgb); // before the file is created
+  Atomic_output_file file(path);
+  if(!write_png(file.stream(), width, height, rgb))
+    throw Output_error(path, "PNG encoding failed");
+  file.commit();
+}
+
+/// Writes an OBJ material library (MTL) with one material `material` whose
+/// diffuse colour is the image `texture_file`:
+/// `newmtl`, `Ka 1 1 1`, `Kd 1 1 1` (the texture is not darkened), `Ks 0 0 0`,
+/// `d 1`, `illum 1`, `map_Kd <texture_file>`.
+///
+/// \param out the stream to write to
+/// \param material the material's name, as given to `write_obj()`; no white space
+/// \param texture_file the image, usually relative to the MTL file's folder; no line break
+/// \throws std::invalid_argument if `material` is empty or has white space, or
+///         `texture_file` is empty or has a line break
+inline void write_mtl(std::ostream& out, const std::string& material, const std::string& texture_file)
+{
+  if(material.empty() || material.find_first_of(" \t\r\n\f\v") != std::string::npos)
+    throw std::invalid_argument("write_mtl: the material name must be one word: \"" + material + "\"");
+  if(texture_file.empty() || texture_file.find_first_of("\r\n") != std::string::npos)
+    throw std::invalid_argument("write_mtl: the texture file name must be one line");
+  out << "# written by diffuv\n"
+      << "newmtl " << material << '\n'
+      << "Ka 1 1 1\n"
+      << "Kd 1 1 1\n"
+      << "Ks 0 0 0\n"
+      << "d 1\n"
+      << "illum 1\n"
+      << "map_Kd " << texture_file << '\n';
+}
+
+/// Same as above, into the file `path`, through `Atomic_output_file`.
+/// \throws std::invalid_argument as above (nothing is written)
+/// \throws Output_error naming `path` if the file cannot be created or written
+inline void write_mtl(const std::string& path, const std::string& material, const std::string& texture_file)
+{
+  Atomic_output_file file(path);
+  write_mtl(file.stream(), material, texture_file);
+  file.commit();
+}
+
+} // namespace diffuv
+
+#endif // DIFFUV_IO_WRITE_TEXTURE_H

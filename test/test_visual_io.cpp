@@ -1,0 +1,302 @@
+// Tests of the visual outputs in include/diffuv/io: the SVG uv layout
+// (write_svg.h) and the checkerboard texture, PNG and MTL writers
+// (write_texture.h).
+//
+// Expectations are independent of the writers: the SVG is parsed by Python's
+// xml.etree (a real XML parser) and its polygons compared with the atlas; the
+// PNG is decoded by stb_image (not the encoder's code); flipped and degenerate
+// triangles are made by hand on a flat grid.
+#include "test_data.h"
+
+#include <diffuv/io/write_svg.h>
+#include <diffuv/io/write_texture.h>
+#include <diffuv/parameterization/parameterize_disc.h>
+
+// The decoder, for the round trip only: a static copy in this file.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
+#pragma GCC diagnostic ignored "-Wunused-function"
+#pragma GCC diagnostic ignored "-Wunused-parameter"
+#pragma GCC diagnostic ignored "-Wsign-compare"
+#pragma GCC diagnostic ignored "-Wimplicit-fallthrough"
+#define STB_IMAGE_STATIC
+#define STB_IMAGE_IMPLEMENTATION
+#include <stb/stb_image.h>
+#pragma GCC diagnostic pop
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+using diffuv_test::Mesh;
+using diffuv_test::Point_2;
+using vertex_descriptor = boost::graph_traits<Mesh>::vertex_descriptor;
+using face_descriptor = boost::graph_traits<Mesh>::face_descriptor;
+using Atlas = diffuv::Uv_atlas<Mesh>;
+
+class VisualIo : public diffuv_test::Temp_dir_test {
+protected:
+  /// Parses the SVG file `svg` with Python's xml.etree and returns what it
+  /// found, one key per line of the script's output (a parse error fails the test).
+  std::map<std::string, std::string> inspect_svg(const std::string& svg)
+  {
+    const std::string script = write("inspect.py", R"(import sys, xml.etree.ElementTree as ET
+ns = '{http://www.w3.org/2000/svg}'
+root = ET.parse(sys.argv[1]).getroot()
+polys = list(root.iter(ns + 'polygon'))
+print('root', root.tag)
+print('viewBox', len(root.get('viewBox', '').split()))
+print('polygons', len(polys))
+print('red', sum(1 for p in polys if p.get('fill') == '#e02020'))
+print('orange', sum(1 for p in polys if p.get('fill') == '#ff9900'))
+print('plain', sum(1 for p in polys if p.get('fill') is None))
+print('polylines', len(list(root.iter(ns + 'polyline'))))
+for l in root.iter(ns + 'polyline'):
+    print(l.get('class'), len(l.get('points').split()))
+print('texts', len(list(root.iter(ns + 'text'))))
+print('first_polygon', polys[0].get('points') if polys else '')
+)");
+    const std::string result = path("inspect.txt");
+    const std::string command = "python3 '" + script + "' '" + svg + "' > '" + result + "' 2> '" + path("inspect.err") + "'";
+    const int rc = std::system(command.c_str());
+    std::ifstream err(path("inspect.err"));
+    std::stringstream err_text;
+    err_text << err.rdbuf();
+    EXPECT_EQ(rc, 0) << "xml.etree could not parse " << svg << ":\n" << err_text.str();
+    std::map<std::string, std::string> found;
+    std::ifstream in(result);
+    std::string line;
+    while(std::getline(in, line)) {
+      const auto space = line.find(' ');
+      if(space != std::string::npos) found[line.substr(0, space)] = line.substr(space + 1);
+    }
+    return found;
+  }
+};
+
+// An atlas of a flat nx x ny grid with uv = (x, y), after `edit` changes the uv.
+template <class Edit>
+void grid_atlas(const Mesh& grid, Atlas& atlas, Edit edit)
+{
+  std::vector<vertex_descriptor> vs(vertices(grid).begin(), vertices(grid).end());
+  std::vector<Point_2> uv;
+  for(vertex_descriptor v : vs) uv.emplace_back(grid.point(v).x(), grid.point(v).y());
+  edit(uv);
+  atlas.add_chart(std::vector<face_descriptor>(faces(grid).begin(), faces(grid).end()), vs, uv);
+}
+
+TEST_F(VisualIo, NefertitiSvgParsesWithOnePolygonPerFaceAndExactUv)
+{
+  const Mesh& mesh = diffuv_test::cgal_mesh("nefertiti.off");
+  ASSERT_EQ(num_faces(mesh), 562u);
+  Atlas atlas(mesh);
+  diffuv::Four_sides<vertex_descriptor> sides;
+  ASSERT_TRUE(diffuv::parameterize_disc(mesh, {}, atlas, &sides).ok());
+
+  const std::string svg = path("nefertiti.svg");
+  diffuv::write_uv_layout_svg(svg, atlas, 0, &sides);
+  auto found = inspect_svg(svg);
+  EXPECT_EQ(found["root"], "{http://www.w3.org/2000/svg}svg");
+  EXPECT_EQ(found["viewBox"], "4");
+  EXPECT_EQ(found["polygons"], "562");
+  EXPECT_EQ(std::stoul(found["plain"]) + std::stoul(found["red"]) + std::stoul(found["orange"]), 562u);
+  EXPECT_EQ(found["polylines"], "4");
+  // Each side has a point per vertex (all are in the one chart).
+  EXPECT_EQ(found["side_u1"], std::to_string(sides.u1.size()));
+  EXPECT_EQ(found["side_u2"], std::to_string(sides.u2.size()));
+  EXPECT_EQ(found["side_v1"], std::to_string(sides.v1.size()));
+  EXPECT_EQ(found["side_v2"], std::to_string(sides.v2.size()));
+  EXPECT_EQ(found["texts"], "5"); // the counts and four legend entries
+
+  // The first polygon holds the exact uv of the chart's first triangle.
+  std::istringstream points(found["first_polygon"]);
+  const auto& chart = atlas.chart(0);
+  for(int k = 0; k < 3; ++k) {
+    std::string pair;
+    ASSERT_TRUE(static_cast<bool>(points >> pair));
+    const auto comma = pair.find(',');
+    ASSERT_NE(comma, std::string::npos) << pair;
+    EXPECT_EQ(std::strtod(pair.substr(0, comma).c_str(), nullptr), chart.uv[chart.triangles[0][k]].x());
+    EXPECT_EQ(std::strtod(pair.substr(comma + 1).c_str(), nullptr), chart.uv[chart.triangles[0][k]].y());
+  }
+
+  // The stream overload writes the same text as the file overload.
+  std::ostringstream text;
+  diffuv::write_uv_layout_svg(text, atlas, 0, &sides);
+  std::ifstream file(svg);
+  std::stringstream file_text;
+  file_text << file.rdbuf();
+  EXPECT_EQ(text.str(), file_text.str());
+
+  // Without sides: no polylines and no legend.
+  diffuv::write_uv_layout_svg(svg, atlas, 0);
+  found = inspect_svg(svg);
+  EXPECT_EQ(found["polygons"], "562");
+  EXPECT_EQ(found["polylines"], "0");
+  EXPECT_EQ(found["texts"], "1");
+}
+
+TEST_F(VisualIo, OneFlippedTriangleIsRedOneDegenerateIsOrange)
+{
+  const Mesh grid = diffuv_test::make_grid(3, 3); // 18 faces
+  // Corner (3,0) is in one face only, (2/3,0) (1,0) (1,1/3): moving it above
+  // the line through the two others flips that face. Corner (0,3) is in one
+  // face only, (0,2/3) (1/3,1) (0,1): moving it onto (0,2/3) collapses it.
+  auto flip_one = [](std::vector<Point_2>& uv) {
+    uv[diffuv_test::grid_vertex(3, 3, 0)] = Point_2(0.7, 0.3);
+    uv[diffuv_test::grid_vertex(3, 0, 3)] = uv[diffuv_test::grid_vertex(3, 0, 2)];
+  };
+  {
+    Atlas atlas(grid);
+    grid_atlas(grid, atlas, flip_one);
+    const std::string svg = path("flipped.svg");
+    diffuv::write_uv_layout_svg(svg, atlas, 0);
+    auto found = inspect_svg(svg);
+    EXPECT_EQ(found["polygons"], "18");
+    EXPECT_EQ(found["red"], "1");
+    EXPECT_EQ(found["orange"], "1");
+    EXPECT_EQ(found["plain"], "16");
+  }
+  {
+    // The whole chart mirrored: most faces are now clockwise, the one face
+    // that was flipped is counter-clockwise and is the only red one.
+    Atlas atlas(grid);
+    grid_atlas(grid, atlas, [&](std::vector<Point_2>& uv) {
+      flip_one(uv);
+      for(Point_2& p : uv) p = Point_2(1. - p.x(), p.y());
+    });
+    const std::string svg = path("mirrored.svg");
+    diffuv::write_uv_layout_svg(svg, atlas, 0);
+    auto found = inspect_svg(svg);
+    EXPECT_EQ(found["red"], "1");
+    EXPECT_EQ(found["orange"], "1");
+  }
+  {
+    // The untouched grid: nothing is red or orange.
+    Atlas atlas(grid);
+    grid_atlas(grid, atlas, [](std::vector<Point_2>&) {});
+    std::ostringstream out;
+    diffuv::write_uv_layout_svg(out, atlas, 0);
+    EXPECT_EQ(out.str().find("#e02020"), std::string::npos);
+    EXPECT_EQ(out.str().find("#ff9900"), std::string::npos);
+    EXPECT_NE(out.str().find("18 faces, 0 flipped, 0 degenerate"), std::string::npos);
+  }
+}
+
+TEST_F(VisualIo, SvgRejectsBadArgumentsAndMissingFolders)
+{
+  const Mesh grid = diffuv_test::make_grid(2, 2);
+  Atlas atlas(grid);
+  grid_atlas(grid, atlas, [](std::vector<Point_2>&) {});
+  std::ostringstream out;
+  EXPECT_THROW(diffuv::write_uv_layout_svg(out, atlas, 1), std::out_of_range);
+  EXPECT_THROW(diffuv::write_uv_layout_svg(out, atlas, 0, nullptr, 0), std::invalid_argument);
+  EXPECT_THROW(diffuv::write_uv_layout_svg(path("missing/uv.svg"), atlas, 0), diffuv::Output_error);
+  EXPECT_FALSE(fs::exists(path("missing")));
+  // A failed write leaves no file behind.
+  EXPECT_THROW(diffuv::write_uv_layout_svg(path("uv.svg"), atlas, 3), std::out_of_range);
+  EXPECT_TRUE(fs::is_empty(dir_));
+}
+
+TEST_F(VisualIo, CheckerTextureAlternatesWithAGrid)
+{
+  const int size = 512, cells = 8, cell = size / cells;
+  const std::vector<unsigned char> rgb = diffuv::checker_texture(size, cells);
+  ASSERT_EQ(rgb.size(), static_cast<std::size_t>(size * size * 3));
+  auto pixel = [&](int x, int y) {
+    const unsigned char* p = &rgb[3 * (static_cast<std::size_t>(y) * size + x)];
+    return diffuv::Rgb{p[0], p[1], p[2]};
+  };
+  const diffuv::Rgb light{235, 235, 225}, dark{50, 90, 170}, grid{20, 20, 20};
+  // The two cell colours contrast (a difference of over 100 in each of R and G).
+  EXPECT_GT(light[0] - dark[0], 100);
+  EXPECT_GT(light[1] - dark[1], 100);
+  // Every cell centre, alternating from a light top-left cell.
+  for(int j = 0; j < cells; ++j)
+    for(int i = 0; i < cells; ++i)
+      EXPECT_EQ(pixel(i * cell + cell / 2, j * cell + cell / 2), (i + j) % 2 == 0 ? light : dark)
+          << "cell " << i << ", " << j;
+  // Thin grid lines: on the border of the image and of every cell, not beside them.
+  EXPECT_EQ(pixel(0, 0), grid);
+  EXPECT_EQ(pixel(size - 1, 100), grid);
+  EXPECT_EQ(pixel(100, size - 1), grid);
+  EXPECT_EQ(pixel(cell, cell / 2), grid);
+  EXPECT_EQ(pixel(cell - 1, cell / 2), grid);
+  EXPECT_EQ(pixel(cell - 2, cell / 2), light);
+  EXPECT_EQ(pixel(cell + 1, cell / 2), dark);
+  EXPECT_EQ(pixel(1, cell / 2), light);
+
+  // Cells that do not divide the size, and bad arguments.
+  EXPECT_EQ(diffuv::checker_texture(100, 3).size(), 100u * 100u * 3u);
+  EXPECT_THROW(diffuv::checker_texture(4, 0), std::invalid_argument);
+  EXPECT_THROW(diffuv::checker_texture(4, 5), std::invalid_argument);
+}
+
+TEST_F(VisualIo, PngRoundTripThroughStbImage)
+{
+  // A non-square image of varied bytes (a wrong stride or channel order shows),
+  // and the checkerboard.
+  const int w = 37, h = 23;
+  std::vector<unsigned char> varied(static_cast<std::size_t>(w * h * 3));
+  for(std::size_t i = 0; i < varied.size(); ++i) varied[i] = static_cast<unsigned char>((i * 7919 + i / 5) % 256);
+  const std::vector<std::pair<std::vector<unsigned char>, std::array<int, 2>>> images = {
+      {varied, {w, h}}, {diffuv::checker_texture(256, 4), {256, 256}}};
+  for(const auto& [rgb, size] : images) {
+    const std::string png = path("image.png");
+    diffuv::write_png_file(png, size[0], size[1], rgb);
+    int rw = 0, rh = 0, channels = 0;
+    unsigned char* data = stbi_load(png.c_str(), &rw, &rh, &channels, 0);
+    ASSERT_NE(data, nullptr) << stbi_failure_reason();
+    EXPECT_EQ(rw, size[0]);
+    EXPECT_EQ(rh, size[1]);
+    EXPECT_EQ(channels, 3);
+    const std::vector<unsigned char> back(data, data + static_cast<std::size_t>(rw) * rh * channels);
+    stbi_image_free(data);
+    EXPECT_EQ(back, rgb);
+  }
+}
+
+TEST_F(VisualIo, PngRejectsBadImagesAndMissingFolders)
+{
+  const std::vector<unsigned char> rgb(4 * 4 * 3, 128);
+  EXPECT_THROW(diffuv::write_png_file(path("missing/t.png"), 4, 4, rgb), diffuv::Output_error);
+  EXPECT_FALSE(fs::exists(path("missing")));
+  EXPECT_THROW(diffuv::write_png_file(path("t.png"), 4, 5, rgb), std::invalid_argument);
+  EXPECT_THROW(diffuv::write_png_file(path("t.png"), 0, 4, rgb), std::invalid_argument);
+  EXPECT_TRUE(fs::is_empty(dir_)); // no file, no temporary left
+}
+
+TEST_F(VisualIo, MtlNamesTheTexture)
+{
+  std::ostringstream out;
+  diffuv::write_mtl(out, "checker", "nefertiti.checker.png");
+  const std::string text = out.str();
+  EXPECT_NE(text.find("newmtl checker\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("\nKd 1 1 1\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("\nmap_Kd nefertiti.checker.png\n"), std::string::npos) << text;
+  // newmtl comes before the statements that describe the material.
+  EXPECT_LT(text.find("newmtl"), text.find("map_Kd"));
+
+  diffuv::write_mtl(path("m.mtl"), "checker", "nefertiti.checker.png");
+  std::ifstream in(path("m.mtl"));
+  std::stringstream file_text;
+  file_text << in.rdbuf();
+  EXPECT_EQ(file_text.str(), text);
+
+  EXPECT_THROW(diffuv::write_mtl(out, "two words", "t.png"), std::invalid_argument);
+  EXPECT_THROW(diffuv::write_mtl(out, "", "t.png"), std::invalid_argument);
+  EXPECT_THROW(diffuv::write_mtl(out, "checker", "a\nb.png"), std::invalid_argument);
+  EXPECT_THROW(diffuv::write_mtl(path("missing/m.mtl"), "checker", "t.png"), diffuv::Output_error);
+  EXPECT_FALSE(fs::exists(path("missing")));
+}
+
+} // namespace
