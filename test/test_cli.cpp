@@ -172,7 +172,7 @@ TEST_F(Tool, NoSubcommandOrUnknownCommandOrEmptyOutput)
 {
   const Tool_run unknown = run("bogus");
   EXPECT_EQ(unknown.code, 2);
-  EXPECT_EQ(unknown.err, "diffuv: error: unknown command 'bogus' (commands: param, segment; see diffuv --help)\n");
+  EXPECT_EQ(unknown.err, "diffuv: error: unknown command 'bogus' (commands: param, render, segment; see diffuv --help)\n");
   const Tool_run empty = run("param " + data_path("meshes/nefertiti.off") + " -o ''");
   EXPECT_EQ(empty.code, 2);
   EXPECT_NE(empty.err.find("the output folder name is empty"), std::string::npos) << empty.err;
@@ -332,6 +332,29 @@ TEST_F(Tool, PatchesOfAPolygonMeshReadBackAsLabels)
   const Tool_run param = run("param " + data_path("meshes/cube_quad.off") + " --labels " + labels.string() + " -o " +
                              (dir_ / "p").string());
   EXPECT_EQ(param.code, 0) << param.err;
+}
+
+TEST_F(Tool, RenderWritesOnlyThePictureWithAHeatMap)
+{
+  const Tool_run r = run("render " + data_path("meshes/three_peaks.off") + " --color angle --view top --size 320x240 -o " +
+                         out_dir().string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  std::vector<std::string> written;
+  for(const auto& e : fs::directory_iterator(out_dir())) written.push_back(e.path().filename().string());
+  EXPECT_EQ(written, std::vector<std::string>{"three_peaks.png"});
+  const std::string png = slurp(out_dir() / "three_peaks.png");
+  ASSERT_GT(png.size(), 24u);
+  EXPECT_EQ(png.substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8));
+  // IHDR: width and height, big-endian, at bytes 16..23.
+  auto be32 = [&](std::size_t at) {
+    return (std::uint32_t(std::uint8_t(png[at])) << 24) | (std::uint32_t(std::uint8_t(png[at + 1])) << 16) |
+           (std::uint32_t(std::uint8_t(png[at + 2])) << 8) | std::uint32_t(std::uint8_t(png[at + 3]));
+  };
+  EXPECT_EQ(be32(16), 320u);
+  EXPECT_EQ(be32(20), 240u);
+  const Tool_run bad = run("render " + data_path("meshes/three_peaks.off") + " --size 12 -o " + out_dir().string());
+  EXPECT_EQ(bad.code, 2);
+  EXPECT_NE(bad.err.find("--size"), std::string::npos) << bad.err;
 }
 
 TEST_F(Tool, AnOutputPathThatIsAFileIsRefused)

@@ -18,6 +18,9 @@ enum Exit_code : int {
 /// Registers `diffuv param`; its callback runs the command.
 void add_param_command(CLI::App& app);
 
+/// Registers `diffuv render` (in param.cpp: the same pipeline, a picture only).
+void add_render_command(CLI::App& app);
+
 /// Registers `diffuv segment`.
 void add_segment_command(CLI::App& app);
 

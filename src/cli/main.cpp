@@ -16,6 +16,7 @@ int main(int argc, char** argv)
   app.set_version_flag("--version", "diffuv 0.1.0");
   app.require_subcommand(1);
   diffuv_cli::add_param_command(app);
+  diffuv_cli::add_render_command(app);
   diffuv_cli::add_segment_command(app);
 
   // CLI11 reports an unknown command as a missing one; say what it is.
@@ -23,7 +24,7 @@ int main(int argc, char** argv)
     bool known = false;
     for(const CLI::App* sub : app.get_subcommands({})) known = known || sub->get_name() == argv[1];
     if(!known) {
-      std::cerr << "diffuv: error: unknown command '" << argv[1] << "' (commands: param, segment; see diffuv --help)\n";
+      std::cerr << "diffuv: error: unknown command '" << argv[1] << "' (commands: param, render, segment; see diffuv --help)\n";
       return diffuv_cli::exit_usage;
     }
   }

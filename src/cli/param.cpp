@@ -17,6 +17,8 @@
 #include <CGAL/Polygon_mesh_processing/measure.h>
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <chrono>
 #include <cstdio>
 #include <iostream>
@@ -38,9 +40,13 @@ struct Param_options {
   int runs = 1;
   std::string distance = "graph";
   std::string view = "iso";
+  double azimuth = std::numeric_limits<double>::quiet_NaN(); // set: overrides --view
+  double elevation = 20;
   std::string size = "800x600";
   int isolines = 10;
   bool svg = false;
+  std::string color = "patches";
+  bool render_only = false; // diffuv render: the picture only
   Patch_cli_options patches;
 };
 
@@ -170,6 +176,58 @@ void print_row(const std::string& name, const std::string& label, std::size_t ve
               d.injective() ? "yes" : "no");
 }
 
+// The picture: the mesh with u, v isolines, faces coloured by patch or by a
+// distortion measure (a heat map on a log scale, flipped faces in magenta,
+// faces in no chart grey, and a colour bar).
+diffuv::Image picture(const Input_mesh& in, const Parameterization& result, const Param_options& options)
+{
+  diffuv::Render_options look;
+  std::tie(look.width, look.height) = parse_size(options.size);
+  look.view = parse_view(options.view);
+  if(!std::isnan(options.azimuth)) {
+    look.use_angles = true;
+    look.azimuth = options.azimuth;
+    look.elevation = options.elevation;
+  }
+  look.isolines = options.isolines;
+  const auto& atlas = *result.atlas;
+  if(options.color == "patches")
+    return diffuv::render_mesh(
+        in.mesh, in.mesh.points(),
+        [&](Mesh::Face_index f) { return diffuv::patch_color(result.seg.face_patch[f.idx()]); },
+        atlas.corner_uv_map(), look);
+
+  // Per-face distortion, chart by chart.
+  std::vector<double> value(num_faces(in.mesh), std::numeric_limits<double>::quiet_NaN());
+  std::vector<bool> flipped(num_faces(in.mesh), false);
+  double largest = 1.;
+  for(const auto& r : result.patches) {
+    if(!r.status) continue;
+    std::vector<diffuv::Triangle_distortion> per_face;
+    const auto& chart = atlas.chart(r.chart);
+    diffuv::measure_distortion(in.mesh, chart.faces, in.mesh.points(), atlas.chart_uv_map(r.chart), &per_face);
+    for(std::size_t k = 0; k < chart.faces.size(); ++k) {
+      const auto& d = per_face[k];
+      const double v = options.color == "angle" ? d.angle : d.area;
+      value[chart.faces[k].idx()] = v;
+      flipped[chart.faces[k].idx()] = d.flipped;
+      if(std::isfinite(v)) largest = std::max(largest, v);
+    }
+  }
+  const double top = std::min(largest, 10.); // 1 .. 10 on a log scale; more is clamped
+  diffuv::Image image = diffuv::render_mesh(
+      in.mesh, in.mesh.points(),
+      [&](Mesh::Face_index f) {
+        const double v = value[f.idx()];
+        if(flipped[f.idx()]) return diffuv::Rgb8{230, 0, 200};
+        if(std::isnan(v)) return diffuv::Rgb8{150, 150, 150};
+        return diffuv::heat_color(top > 1. ? std::log(std::max(v, 1.)) / std::log(top) : 0.);
+      },
+      atlas.corner_uv_map(), look);
+  diffuv::draw_color_bar(image, 1., top, options.color + " distortion (log)");
+  return image;
+}
+
 void run_param(const Param_options& options)
 {
   parse_size(options.size); // a bad --size is a usage error before any work
@@ -208,6 +266,7 @@ void run_param(const Param_options& options)
   // Everything is computed before anything is written: all files or none.
   const std::vector<std::string> inputs = {in.path, options.corners, options.patches.labels};
   diffuv::Output_folder out(options.output, inputs);
+  if(!options.render_only) {
   // A textured OBJ: any viewer shows the map as a checkerboard on the mesh.
   const std::string texture = output_name(in.path, ".checker.png");
   diffuv::write_obj(out.open(output_name(in.path, ".obj")), in.mesh, in.mesh.points(), atlas.corner_uv_map(),
@@ -221,16 +280,8 @@ void run_param(const Param_options& options)
                                     result.patches[p].chart, &result.patches[p].sides);
   diffuv::write_uv_table(out.open(output_name(in.path, ".uv.csv")), atlas);
   write_polygon_patches(out.open(output_name(in.path, ".patches.txt")), in, result.seg);
-  // A picture of the result: patch colours and u, v isolines (the paper's Figure 10).
-  diffuv::Render_options look;
-  std::tie(look.width, look.height) = parse_size(options.size);
-  look.view = parse_view(options.view);
-  look.isolines = options.isolines;
-  const diffuv::Image image = diffuv::render_mesh(
-      in.mesh, in.mesh.points(),
-      [&](Mesh::Face_index f) { return diffuv::patch_color(result.seg.face_patch[f.idx()]); }, atlas.corner_uv_map(),
-      look);
-  diffuv::write_png(out.open(output_name(in.path, ".png")), image, output_name(in.path, ".png"));
+  }
+  diffuv::write_png(out.open(output_name(in.path, ".png")), picture(in, result, options), output_name(in.path, ".png"));
   out.commit();
 
   // The summary.
@@ -304,48 +355,82 @@ void run_param(const Param_options& options)
 
 } // namespace
 
-void add_param_command(CLI::App& app)
+namespace {
+
+// The options `param` and `render` share: what is parameterized, and how it is drawn.
+void add_common_options(CLI::App* cmd, Param_options& o)
 {
-  auto options = std::make_shared<Param_options>();
-  CLI::App* cmd = app.add_subcommand(
-      "param", "Parameterize a mesh patch by patch, each onto the unit square; write OBJ (vt per corner), a uv table "
-               "and the patches");
-  cmd->add_option("mesh", options->mesh,
+  cmd->add_option("mesh", o.mesh,
                   "Triangle mesh (OFF, OBJ, PLY, STL). A disc is one patch; any other mesh is cut into disc patches. "
                   "Default: CGAL's cow.off");
-  cmd->add_option("--corners", options->corners,
+  cmd->add_option("--corners", o.corners,
                   "Disc mesh only: CGAL *.selection.txt with four boundary vertex indices on its first line. The first "
                   "goes to (0,0), the others follow counter-clockwise along the boundary to (1,0), (1,1), (0,1). "
                   "Default: automatic (the sharpest boundary vertex, then equal arc lengths)");
-  add_patch_options(cmd, options->patches);
-  cmd->add_option("-o,--output", options->output, "Output folder (created if needed)")
+  add_patch_options(cmd, o.patches);
+  cmd->add_option("-o,--output", o.output, "Output folder (created if needed)")
       ->check(CLI::Validator([](const std::string& s) { return s.empty() ? "the output folder name is empty" : ""; },
                              "DIR"))
       ->capture_default_str();
-  cmd->add_option("--distance", options->distance,
+  cmd->add_option("--distance", o.distance,
                   "Distance diffused from each side: graph (edge paths, the paper's), fmm (fast marching through "
                   "triangles) or exact (exact geodesics, CGAL's Surface_mesh_shortest_path; slow)")
       ->check(CLI::IsMember({"graph", "fmm", "exact"}))
       ->capture_default_str();
-  cmd->add_option("--view", options->view, "View of the picture: front, back, left, right, top or iso")
+  cmd->add_option("--view", o.view, "View of the picture: front, back, left, right, top or iso")
       ->check(CLI::IsMember({"front", "back", "left", "right", "top", "iso"}))
       ->capture_default_str();
-  cmd->add_option("--size", options->size, "Size of the picture, WxH pixels")->capture_default_str();
-  cmd->add_option("--isolines", options->isolines, "u and v isolines every 1/N in the picture (0: none)")
+  cmd->add_option("--azimuth", o.azimuth,
+                  "Camera azimuth in degrees around the y axis (0: looking along -z, as front); replaces --view")
+      ->check(CLI::Range(-360., 360.));
+  cmd->add_option("--elevation", o.elevation, "Camera elevation in degrees, with --azimuth")
+      ->check(CLI::Range(-90., 90.))
+      ->capture_default_str();
+  cmd->add_option("--size", o.size, "Size of the picture, WxH pixels")->capture_default_str();
+  cmd->add_option("--isolines", o.isolines, "u and v isolines every 1/N in the picture (0: none)")
       ->check(CLI::Range(0, 1000))
       ->capture_default_str();
+  cmd->add_option("--color", o.color,
+                  "Face colours of the picture: patches, angle (sigma_max/sigma_min) or area distortion, as a heat "
+                  "map from 1 to 10 (log scale; flipped faces magenta)")
+      ->check(CLI::IsMember({"patches", "angle", "area"}))
+      ->capture_default_str();
+}
+
+const char* const exit_codes = "Exit codes: 0 ok, 1 bad input, 2 bad command line, 3 cannot write, 4 internal error.";
+
+} // namespace
+
+void add_param_command(CLI::App& app)
+{
+  auto options = std::make_shared<Param_options>();
+  CLI::App* cmd = app.add_subcommand(
+      "param", "Parameterize a mesh patch by patch, each onto the unit square; write OBJ (vt per corner), a uv table, "
+               "the patches and a picture");
+  add_common_options(cmd, *options);
   cmd->add_flag("--svg", options->svg, "Also write each patch's uv layout as OUTPUT/<mesh>.patch<N>.svg (flipped "
                                       "triangles in red, the four sides in colour)");
   cmd->add_option("--runs", options->runs, "Run the parameterization N times and report the median time")
       ->check(CLI::Range(1, 1000))
       ->capture_default_str();
-  cmd->footer("Writes OUTPUT/<mesh>.obj (v in input order, one vt per distinct (vertex, uv)), OUTPUT/<mesh>.uv.csv "
-              "(vertex,patch,u,v), OUTPUT/<mesh>.mtl and <mesh>.checker.png (the OBJ's material and texture), "
-              "OUTPUT/<mesh>.png (the mesh with its patches and u, v isolines) and "
+  cmd->footer(std::string("Writes OUTPUT/<mesh>.obj (v in input order, one vt per distinct (vertex, uv)), "
+              "OUTPUT/<mesh>.uv.csv (vertex,patch,u,v), OUTPUT/<mesh>.mtl and <mesh>.checker.png (the OBJ's material "
+              "and texture), OUTPUT/<mesh>.png (the mesh with its patches and u, v isolines) and "
               "OUTPUT/<mesh>.patches.txt (the patch of each face of the mesh file, one per "
               "line: a label file for --labels).\nA patch that cannot be mapped is listed and warned about; the others "
-              "are written (with --strict, or if none can be mapped: an error).\n"
-              "Exit codes: 0 ok, 1 bad input, 2 bad command line, 3 cannot write, 4 internal error.");
+              "are written (with --strict, or if none can be mapped: an error).\n") + exit_codes);
+  cmd->callback([options]() { run_param(*options); });
+}
+
+void add_render_command(CLI::App& app)
+{
+  auto options = std::make_shared<Param_options>();
+  options->render_only = true;
+  CLI::App* cmd = app.add_subcommand(
+      "render", "Parameterize a mesh as param does and draw it: u, v isolines on patch colours or a distortion "
+                "heat map (offscreen, PNG)");
+  add_common_options(cmd, *options);
+  cmd->footer(std::string("Writes OUTPUT/<mesh>.png only.\n") + exit_codes);
   cmd->callback([options]() { run_param(*options); });
 }
 
