@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -352,9 +353,13 @@ TEST_F(Tool, RenderWritesOnlyThePictureWithAHeatMap)
   };
   EXPECT_EQ(be32(16), 320u);
   EXPECT_EQ(be32(20), 240u);
-  const Tool_run bad = run("render " + data_path("meshes/three_peaks.off") + " --size 12 -o " + out_dir().string());
-  EXPECT_EQ(bad.code, 2);
-  EXPECT_NE(bad.err.find("--size"), std::string::npos) << bad.err;
+  fs::remove_all(out_dir());
+  for(const char* args : {" --size 12", " --azimuth nan", " --elevation 30", " --view sideways", " --color red"}) {
+    const Tool_run bad = run("render " + data_path("meshes/three_peaks.off") + args + " -o " + out_dir().string());
+    EXPECT_EQ(bad.code, 2) << args;
+    EXPECT_EQ(std::count(bad.err.begin(), bad.err.end(), '\n'), 1) << args << ": " << bad.err;
+    EXPECT_FALSE(fs::exists(out_dir())) << args;
+  }
 }
 
 TEST_F(Tool, AnOutputPathThatIsAFileIsRefused)

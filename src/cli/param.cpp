@@ -285,7 +285,7 @@ void run_param(const Param_options& options)
   out.commit();
 
   // The summary.
-  std::cout << "diffuv param " << in.path << ": " << in.report.vertices << " vertices, " << num_faces(in.mesh) << " faces";
+  std::cout << (options.render_only ? "diffuv render " : "diffuv param ") << in.path << ": " << in.report.vertices << " vertices, " << num_faces(in.mesh) << " faces";
   if(in.report.polygons_triangulated > 0) std::cout << " (" << in.report.polygons_triangulated << " polygons triangulated)";
   if(in.report.degenerate_faces > 0) std::cout << ", " << in.report.degenerate_faces << " zero-area faces";
   std::cout << '\n';
@@ -380,11 +380,24 @@ void add_common_options(CLI::App* cmd, Param_options& o)
   cmd->add_option("--view", o.view, "View of the picture: front, back, left, right, top or iso")
       ->check(CLI::IsMember({"front", "back", "left", "right", "top", "iso"}))
       ->capture_default_str();
-  cmd->add_option("--azimuth", o.azimuth,
-                  "Camera azimuth in degrees around the y axis (0: looking along -z, as front); replaces --view")
-      ->check(CLI::Range(-360., 360.));
-  cmd->add_option("--elevation", o.elevation, "Camera elevation in degrees, with --azimuth")
+  const auto finite = CLI::Validator(
+      [](std::string& text) {
+        try {
+          return std::isfinite(std::stod(text)) ? std::string() : std::string("must be a finite number");
+        } catch(const std::exception&) {
+          return std::string("must be a number");
+        }
+      },
+      "DEGREES");
+  CLI::Option* azimuth =
+      cmd->add_option("--azimuth", o.azimuth,
+                      "Camera azimuth in degrees around the y axis (0: looking along -z, as front); replaces --view")
+          ->check(finite)
+          ->check(CLI::Range(-360., 360.));
+  cmd->add_option("--elevation", o.elevation, "Camera elevation in degrees (needs --azimuth)")
+      ->check(finite)
       ->check(CLI::Range(-90., 90.))
+      ->needs(azimuth)
       ->capture_default_str();
   cmd->add_option("--size", o.size, "Size of the picture, WxH pixels")->capture_default_str();
   cmd->add_option("--isolines", o.isolines, "u and v isolines every 1/N in the picture (0: none)")
