@@ -14,7 +14,6 @@
 #include <diffuv/parameterization/parameterize_patches.h>
 #include <diffuv/render/render_mesh.h>
 
-#include <CGAL/Polygon_mesh_processing/measure.h>
 
 #include <algorithm>
 #include <cmath>
@@ -176,10 +175,35 @@ void print_row(const std::string& name, const std::string& label, std::size_t ve
               d.injective() ? "yes" : "no");
 }
 
+// The distortion of one patch's chart, face by face and in summary: measured
+// once, for the table and for the heat map.
+struct Chart_measure {
+  diffuv::Distortion_summary summary;
+  std::vector<diffuv::Triangle_distortion> per_face; // one per face of the chart, in chart order
+  double area = 0;                                   // 3D area of the chart
+};
+
+// #P entries; a patch without a chart gets an empty measure.
+std::vector<Chart_measure> measure_charts(const Input_mesh& in, const Parameterization& result)
+{
+  std::vector<Chart_measure> measures(result.patches.size());
+  for(std::size_t p = 0; p < result.patches.size(); ++p) {
+    const auto& r = result.patches[p];
+    if(!r.status) continue;
+    const auto& chart = result.atlas->chart(r.chart);
+    Chart_measure& m = measures[p];
+    m.summary = diffuv::measure_distortion(in.mesh, chart.faces, in.mesh.points(),
+                                           result.atlas->chart_uv_map(r.chart), &m.per_face);
+    for(const auto& d : m.per_face) m.area += d.area_3d;
+  }
+  return measures;
+}
+
 // The picture: the mesh with u, v isolines, faces coloured by patch or by a
 // distortion measure (a heat map on a log scale, flipped faces in magenta,
 // faces in no chart grey, and a colour bar).
-diffuv::Image picture(const Input_mesh& in, const Parameterization& result, const Param_options& options)
+diffuv::Image picture(const Input_mesh& in, const Parameterization& result, const std::vector<Chart_measure>& measures,
+                      const Param_options& options)
 {
   diffuv::Render_options look;
   std::tie(look.width, look.height) = parse_size(options.size);
@@ -201,13 +225,11 @@ diffuv::Image picture(const Input_mesh& in, const Parameterization& result, cons
   std::vector<double> value(num_faces(in.mesh), std::numeric_limits<double>::quiet_NaN());
   std::vector<bool> flipped(num_faces(in.mesh), false);
   double largest = 1.;
-  for(const auto& r : result.patches) {
-    if(!r.status) continue;
-    std::vector<diffuv::Triangle_distortion> per_face;
-    const auto& chart = atlas.chart(r.chart);
-    diffuv::measure_distortion(in.mesh, chart.faces, in.mesh.points(), atlas.chart_uv_map(r.chart), &per_face);
+  for(std::size_t p = 0; p < result.patches.size(); ++p) {
+    if(!result.patches[p].status) continue;
+    const auto& chart = atlas.chart(result.patches[p].chart);
     for(std::size_t k = 0; k < chart.faces.size(); ++k) {
-      const auto& d = per_face[k];
+      const auto& d = measures[p].per_face[k];
       const double v = options.color == "angle" ? d.angle : d.area;
       value[chart.faces[k].idx()] = v;
       flipped[chart.faces[k].idx()] = d.flipped;
@@ -265,23 +287,25 @@ void run_param(const Param_options& options)
 
   // Everything is computed before anything is written: all files or none.
   const std::vector<std::string> inputs = {in.path, options.corners, options.patches.labels};
+  const std::vector<Chart_measure> measures = measure_charts(in, result); // for the picture and the table
   diffuv::Output_folder out(options.output, inputs);
   if(!options.render_only) {
-  // A textured OBJ: any viewer shows the map as a checkerboard on the mesh.
-  const std::string texture = output_name(in.path, ".checker.png");
-  diffuv::write_obj(out.open(output_name(in.path, ".obj")), in.mesh, in.mesh.points(), atlas.corner_uv_map(),
-                    output_name(in.path, ".mtl"), "diffuv_checker");
-  diffuv::write_mtl(out.open(output_name(in.path, ".mtl")), "diffuv_checker", texture);
-  diffuv::write_png(out.open(texture), 512, 512, diffuv::checker_texture(512, 8));
-  if(options.svg)
-    for(std::size_t p = 0; p < result.patches.size(); ++p)
-      if(result.patches[p].status)
-        diffuv::write_uv_layout_svg(out.open(output_name(in.path, ".patch" + std::to_string(p) + ".svg")), atlas,
-                                    result.patches[p].chart, &result.patches[p].sides);
-  diffuv::write_uv_table(out.open(output_name(in.path, ".uv.csv")), atlas);
-  write_polygon_patches(out.open(output_name(in.path, ".patches.txt")), in, result.seg);
+    // A textured OBJ: any viewer shows the map as a checkerboard on the mesh.
+    const std::string texture = output_name(in.path, ".checker.png");
+    diffuv::write_obj(out.open(output_name(in.path, ".obj")), in.mesh, in.mesh.points(), atlas.corner_uv_map(),
+                      output_name(in.path, ".mtl"), "diffuv_checker");
+    diffuv::write_mtl(out.open(output_name(in.path, ".mtl")), "diffuv_checker", texture);
+    diffuv::write_png(out.open(texture), 512, 512, diffuv::checker_texture(512, 8));
+    if(options.svg)
+      for(std::size_t p = 0; p < result.patches.size(); ++p)
+        if(result.patches[p].status)
+          diffuv::write_uv_layout_svg(out.open(output_name(in.path, ".patch" + std::to_string(p) + ".svg")), atlas,
+                                      result.patches[p].chart, &result.patches[p].sides);
+    diffuv::write_uv_table(out.open(output_name(in.path, ".uv.csv")), atlas);
+    write_polygon_patches(out.open(output_name(in.path, ".patches.txt")), in, result.seg);
   }
-  diffuv::write_png(out.open(output_name(in.path, ".png")), picture(in, result, options), output_name(in.path, ".png"));
+  diffuv::write_png(out.open(output_name(in.path, ".png")), picture(in, result, measures, options),
+                    output_name(in.path, ".png"));
   out.commit();
 
   // The summary.
@@ -318,11 +342,10 @@ void run_param(const Param_options& options)
       continue;
     }
     const auto& chart = atlas.chart(r.chart);
-    const auto d = diffuv::measure_distortion(in.mesh, chart.faces, in.mesh.points(), atlas.chart_uv_map(r.chart));
+    const diffuv::Distortion_summary& d = measures[p].summary;
+    const double area = measures[p].area;
     print_row(std::to_string(p), label, chart.vertices.size(), chart.faces.size(), corner_rule(r.side_report, !options.corners.empty()),
               r.milliseconds, d);
-    double area = 0;
-    for(auto f : chart.faces) area += CGAL::Polygon_mesh_processing::face_area(f, in.mesh);
     vertex_entries += chart.vertices.size();
     total.faces += d.faces;
     total.flipped += d.flipped;

@@ -3,6 +3,7 @@
 #define DIFFUV_PATCHES_DISC_PATCHES_H
 
 #include <diffuv/error.h>
+#include <diffuv/patches/disc_topology.h>
 #include <diffuv/patches/segmentation.h>
 #include <diffuv/patches/split_patches.h>
 

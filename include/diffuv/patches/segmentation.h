@@ -8,15 +8,13 @@
 #define DIFFUV_PATCHES_SEGMENTATION_H
 
 #include <diffuv/error.h>
-#include <diffuv/graph/edge_length_map.h>
 #include <diffuv/graph/multi_source_dijkstra.h>
-#include <diffuv/patches/disc_topology.h>
 
-#include <CGAL/boost/graph/Face_filtered_graph.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/centroid.h>
+#include <CGAL/squared_distance_3.h>
 
 #include <boost/graph/adjacency_list.hpp>
 #include <boost/graph/graph_traits.hpp>

@@ -95,7 +95,7 @@ bool split_cap(const TriangleMesh& tm, Segmentation<TriangleMesh>& seg, std::siz
 
   const Patch graph(tm, seg.patch_faces[p]);
   auto pindex = get(boost::vertex_index, graph);
-  const auto lengths = edge_length_map(tm);
+  const auto lengths = edge_length_map(tm, vpm); // the same point map as the cut
   Multi_source_dijkstra<Patch> dijkstra(graph);
   std::vector<double> from_border(num_vertices(graph)), from_tip(num_vertices(graph));
   dijkstra.run(loop.vertices, lengths, boost::make_iterator_property_map(from_border.begin(), pindex));
