@@ -173,7 +173,7 @@ TEST_F(Tool, NoSubcommandOrUnknownCommandOrEmptyOutput)
 {
   const Tool_run unknown = run("bogus");
   EXPECT_EQ(unknown.code, 2);
-  EXPECT_EQ(unknown.err, "diffuv: error: unknown command 'bogus' (commands: param, render, segment; see diffuv --help)\n");
+  EXPECT_EQ(unknown.err, "diffuv: error: unknown command 'bogus' (commands: param, render, segment, compare; see diffuv --help)\n");
   const Tool_run empty = run("param " + data_path("meshes/nefertiti.off") + " -o ''");
   EXPECT_EQ(empty.code, 2);
   EXPECT_NE(empty.err.find("the output folder name is empty"), std::string::npos) << empty.err;
@@ -199,7 +199,7 @@ TEST_F(Tool, ClosedMeshesAreCutIntoPatchesAndEveryVertexIsMapped)
 {
   const Tool_run r = run("param " + data_path("meshes/cow.off") + " -o " + out_dir().string());
   ASSERT_EQ(r.code, 0) << r.err;
-  EXPECT_NE(r.out.find("graph distances: automatic"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("fmm distances: automatic"), std::string::npos) << r.out;
   const auto rows = read_csv(out_dir() / "cow.uv.csv");
   std::set<std::size_t> mapped;
   for(std::size_t i = 1; i < rows.size(); ++i) {

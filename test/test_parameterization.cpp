@@ -246,7 +246,7 @@ TEST(DiffusionCoordinates, FastMarchingRemovesTheCollapsedTrianglesOfEdgePaths)
   // distortion up to 1e5); distances through triangles do not.
   const Mesh& mesh = cgal_mesh("mushroom.off");
   Atlas graph(mesh), fmm(mesh);
-  ASSERT_TRUE(diffuv::parameterize_disc(mesh, {}, graph).ok());
+  ASSERT_TRUE(diffuv::parameterize_disc(mesh, {}, graph, nullptr, diffuv::Fibonacci_heap_tag(), diffuv::Graph_distance_tag()).ok());
   ASSERT_TRUE(diffuv::parameterize_disc(mesh, {}, fmm, nullptr, diffuv::Fibonacci_heap_tag(), diffuv::Fmm_distance_tag()).ok());
   const auto dg = diffuv::measure_distortion(mesh, faces(mesh), mesh.points(), graph.chart_uv_map(0));
   const auto df = diffuv::measure_distortion(mesh, faces(mesh), mesh.points(), fmm.chart_uv_map(0));

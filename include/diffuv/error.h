@@ -32,7 +32,8 @@ enum class Status_code {
   corner_not_on_border,   ///< a corner vertex is not on the boundary loop
   corner_duplicated,      ///< the same vertex is given twice as a corner
   border_too_short,       ///< fewer than four vertices on the boundary loop
-  unreachable_vertices    ///< some vertices are not reached from a side
+  unreachable_vertices,   ///< some vertices are not reached from a side
+  not_injective           ///< the (u,v) map still folds after the repair
 };
 
 /// Returns the fixed English sentence for `code`.
@@ -56,6 +57,7 @@ inline const char* message(Status_code code)
     case Status_code::corner_not_on_border: return "a corner vertex is not on the boundary of the mesh";
     case Status_code::corner_duplicated: return "a corner vertex is given twice";
     case Status_code::border_too_short: return "the boundary has fewer than four vertices";
+    case Status_code::not_injective: return "the (u,v) map still folds after the repair";
     case Status_code::unreachable_vertices: return "some vertices are not reached from every side";
   }
   return "unknown status"; // unreachable for valid enum values

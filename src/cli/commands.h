@@ -21,6 +21,9 @@ void add_param_command(CLI::App& app);
 /// Registers `diffuv render` (in param.cpp: the same pipeline, a picture only).
 void add_render_command(CLI::App& app);
 
+/// Registers `diffuv compare`.
+void add_compare_command(CLI::App& app);
+
 /// Registers `diffuv segment`.
 void add_segment_command(CLI::App& app);
 

@@ -12,19 +12,20 @@ int main(int argc, char** argv)
 {
   CLI::App app{"diffuv: diffusion-based surface parameterization (CGAL)\n"
                "Each vertex of a disc patch gets u = d_u1/(d_u1+d_u2), v = d_v1/(d_v1+d_v2) from its\n"
-               "graph distances to the four sides of the patch."};
+               "distances to the four sides of the patch; folds are then repaired."};
   app.set_version_flag("--version", "diffuv 0.1.0");
   app.require_subcommand(1);
   diffuv_cli::add_param_command(app);
   diffuv_cli::add_render_command(app);
   diffuv_cli::add_segment_command(app);
+  diffuv_cli::add_compare_command(app);
 
   // CLI11 reports an unknown command as a missing one; say what it is.
   if(argc > 1 && argv[1][0] != '-') {
     bool known = false;
     for(const CLI::App* sub : app.get_subcommands({})) known = known || sub->get_name() == argv[1];
     if(!known) {
-      std::cerr << "diffuv: error: unknown command '" << argv[1] << "' (commands: param, render, segment; see diffuv --help)\n";
+      std::cerr << "diffuv: error: unknown command '" << argv[1] << "' (commands: param, render, segment, compare; see diffuv --help)\n";
       return diffuv_cli::exit_usage;
     }
   }

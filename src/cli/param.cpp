@@ -37,7 +37,8 @@ struct Param_options {
   std::string corners;
   std::string output = "diffuv-out";
   int runs = 1;
-  std::string distance = "graph";
+  std::string distance = "fmm";
+  bool no_repair = false;
   std::string view = "iso";
   double azimuth = std::numeric_limits<double>::quiet_NaN(); // set: overrides --view
   double elevation = 20;
@@ -89,9 +90,9 @@ struct Parameterization {
 template <class F>
 auto with_distance(const std::string& name, F f)
 {
-  if(name == "fmm") return f(diffuv::Fmm_distance_tag());
+  if(name == "graph") return f(diffuv::Graph_distance_tag());
   if(name == "exact") return f(diffuv::Exact_distance_tag());
-  return f(diffuv::Graph_distance_tag());
+  return f(diffuv::Fmm_distance_tag());
 }
 
 bool is_corner_problem(diffuv::Status_code code)
@@ -109,14 +110,16 @@ bool is_corner_problem(diffuv::Status_code code)
 
 // A disc mesh with four given corners: one chart.
 Parameterization parameterize_with_corners(const Input_mesh& in, const std::vector<vertex_descriptor>& corners,
-                                           const std::string& corner_file, const std::string& distance)
+                                           const std::string& corner_file, const std::string& distance,
+                                           const diffuv::Repair_options& repair)
 {
   Parameterization result;
   result.atlas = std::make_unique<Atlas>(in.mesh);
   diffuv::Patch_result<Mesh> patch;
   const auto start = std::chrono::steady_clock::now();
   patch.status = with_distance(distance, [&](auto tag) {
-    return diffuv::parameterize_disc(in.mesh, corners, *result.atlas, &patch.sides, diffuv::Fibonacci_heap_tag(), tag);
+    return diffuv::parameterize_disc(in.mesh, corners, *result.atlas, &patch.sides, diffuv::Fibonacci_heap_tag(), tag,
+                                     repair, &patch.repair);
   });
   result.milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   if(!patch.status) {
@@ -143,14 +146,15 @@ Parameterization parameterize_with_corners(const Input_mesh& in, const std::vect
 
 // Any mesh: disc patches (from labels, or automatic), each mapped on its own.
 Parameterization parameterize_by_patches(const Input_mesh& in, const Patch_cli_options& options,
-                                         const std::string& distance)
+                                         const std::string& distance, const diffuv::Repair_options& repair)
 {
   Parameterization result;
   result.atlas = std::make_unique<Atlas>(in.mesh);
   const auto start = std::chrono::steady_clock::now();
   result.seg = make_patches(in, options, result.patching);
   result.patches = with_distance(distance, [&](auto tag) {
-    return diffuv::parameterize_patches(in.mesh, result.seg, in.mesh.points(), *result.atlas, tag);
+    return diffuv::parameterize_patches(in.mesh, result.seg, in.mesh.points(), *result.atlas, tag,
+                                        diffuv::Fibonacci_heap_tag(), repair);
   });
   result.milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return result;
@@ -163,14 +167,16 @@ std::string corner_rule(const diffuv::Side_report& r, bool given)
   std::string s = std::to_string(r.runs) + " runs";
   if(r.merged) s += " -" + std::to_string(r.merged);
   if(r.split) s += " +" + std::to_string(r.split);
+  if(r.moved) s += " ~" + std::to_string(r.moved);
   return s;
 }
 
 void print_row(const std::string& name, const std::string& label, std::size_t vertices, std::size_t faces,
-               const std::string& corners, double ms, const diffuv::Distortion_summary& d)
+               const std::string& corners, double ms, std::size_t moved, std::size_t forced,
+               const diffuv::Distortion_summary& d)
 {
-  std::printf("%-6s %6s %8zu %8zu %-10s %8.2f %7zu %5zu %8zu %9.4f %9.4g %9.4f %9.4g %8.4g %9.4g %9s\n",
-              name.c_str(), label.c_str(), vertices, faces, corners.c_str(), ms, d.flipped, d.degenerate,
+  std::printf("%-6s %6s %8zu %8zu %-10s %8.2f %6zu %7zu %5zu %6zu %8zu %9.4f %9.4g %9.4f %9.4g %8.4g %9.4g %9s\n",
+              name.c_str(), label.c_str(), vertices, faces, corners.c_str(), ms, moved, d.flipped, d.degenerate, forced,
               d.overlapping_pairs, d.angle_mean, d.angle_max, d.area_mean, d.area_max, d.stretch_l2, d.stretch_linf,
               d.injective() ? "yes" : "no");
 }
@@ -265,9 +271,11 @@ void run_param(const Param_options& options)
   // --runs repeats everything after reading and reports the median time.
   Parameterization result;
   std::vector<double> times;
+  diffuv::Repair_options repair;
+  repair.enabled = !options.no_repair;
   for(int run = 0; run < options.runs; ++run) {
-    result = options.corners.empty() ? parameterize_by_patches(in, options.patches, options.distance)
-                                     : parameterize_with_corners(in, corners, options.corners, options.distance);
+    result = options.corners.empty() ? parameterize_by_patches(in, options.patches, options.distance, repair)
+                                     : parameterize_with_corners(in, corners, options.corners, options.distance, repair);
     times.push_back(result.milliseconds);
   }
   std::sort(times.begin(), times.end());
@@ -325,13 +333,13 @@ void run_param(const Param_options& options)
                                                          : "the whole disc")
               << "; " << r.merged << " merged, " << r.cut << " cut into discs, " << r.caps_split << " caps split\n";
   }
-  std::printf("%-6s %6s %8s %8s %-10s %8s %7s %5s %8s %9s %9s %9s %9s %8s %9s %9s\n", "patch", "label", "vertices",
-              "faces", "corners", "time_ms", "flipped", "degen", "overlaps", "angle_avg", "angle_max", "area_avg",
+  std::printf("%-6s %6s %8s %8s %-10s %8s %6s %7s %5s %6s %8s %9s %9s %9s %9s %8s %9s %9s\n", "patch", "label",
+              "vertices", "faces", "corners", "time_ms", "moved", "flipped", "degen", "forced", "overlaps", "angle_avg", "angle_max", "area_avg",
               "area_max", "L2", "Linf", "injective");
 
   diffuv::Distortion_summary total;
   double area_sum = 0, angle_sum = 0, areadist_sum = 0, l2_sum = 0, patch_ms = 0;
-  std::size_t vertex_entries = 0;
+  std::size_t vertex_entries = 0, moved = 0, forced = 0;
   for(std::size_t p = 0; p < result.patches.size(); ++p) {
     const auto& r = result.patches[p];
     const std::string label = std::to_string(result.seg.patch_label[p]) +
@@ -344,8 +352,12 @@ void run_param(const Param_options& options)
     const auto& chart = atlas.chart(r.chart);
     const diffuv::Distortion_summary& d = measures[p].summary;
     const double area = measures[p].area;
-    print_row(std::to_string(p), label, chart.vertices.size(), chart.faces.size(), corner_rule(r.side_report, !options.corners.empty()),
-              r.milliseconds, d);
+    const std::size_t patch_moved = r.repair.moved_vertices + r.repair.moved_border_vertices;
+    print_row(std::to_string(p), label, chart.vertices.size(), chart.faces.size(),
+              corner_rule(r.side_report, !options.corners.empty()), r.milliseconds, patch_moved,
+              r.repair.forced_degenerate, d);
+    moved += patch_moved;
+    forced += r.repair.forced_degenerate;
     vertex_entries += chart.vertices.size();
     total.faces += d.faces;
     total.flipped += d.flipped;
@@ -365,7 +377,7 @@ void run_param(const Param_options& options)
     total.area_mean = areadist_sum / area_sum;
     total.stretch_l2 = std::sqrt(l2_sum / area_sum);
   }
-  print_row("total", "", vertex_entries, total.faces, "", total_ms, total);
+  print_row("total", "", vertex_entries, total.faces, "", total_ms, moved, forced, total);
   if(failed > 0)
     std::cerr << "diffuv: warning: " << failed << " of " << result.patches.size()
               << " patches cannot be parameterized (see the table); their faces have no (u,v)\n";
@@ -396,10 +408,13 @@ void add_common_options(CLI::App* cmd, Param_options& o)
                              "DIR"))
       ->capture_default_str();
   cmd->add_option("--distance", o.distance,
-                  "Distance diffused from each side: graph (edge paths, the paper's), fmm (fast marching through "
-                  "triangles) or exact (exact geodesics, CGAL's Surface_mesh_shortest_path; slow)")
+                  "Distance diffused from each side: fmm (fast marching through triangles), graph (edge paths, the "
+                  "paper's) or exact (exact geodesics, CGAL's Surface_mesh_shortest_path; slow)")
       ->check(CLI::IsMember({"graph", "fmm", "exact"}))
       ->capture_default_str();
+  cmd->add_flag("--no-repair", o.no_repair,
+                "Keep the raw diffusion coordinates, folds included (the paper's method). By default every fold is "
+                "repaired: the folded region is re-solved as a convex-combination map (see doc/quality.md)");
   cmd->add_option("--view", o.view, "View of the picture: front, back, left, right, top or iso")
       ->check(CLI::IsMember({"front", "back", "left", "right", "top", "iso"}))
       ->capture_default_str();

@@ -3,8 +3,9 @@
 // The paper diffuses along edges (graph distances, section 2.6) and notes
 // that geodesics would respect the surface better at a higher cost. Three
 // backends, chosen by a tag, all multi-source:
-//   Graph_distance_tag  the paper's edge-path Dijkstra (default)
-//   Fmm_distance_tag    first-order fast marching across triangles (fast_marching.h)
+//   Graph_distance_tag  the paper's edge-path Dijkstra
+//   Fmm_distance_tag    first-order fast marching across triangles (fast_marching.h);
+//                       the pipelines' default (doc/quality.md has the numbers)
 //   Exact_distance_tag  exact polyhedral geodesics, CGAL's Surface_mesh_shortest_path (slow)
 #ifndef DIFFUV_GRAPH_DISTANCE_TAGS_H
 #define DIFFUV_GRAPH_DISTANCE_TAGS_H
@@ -27,6 +28,11 @@ struct Graph_distance_tag {};
 struct Fmm_distance_tag {};
 /// Exact polyhedral geodesics: `exact_geodesic_distances()` (the edge weights are not used).
 struct Exact_distance_tag {};
+
+/// The distance of `parameterize_disc()` and `parameterize_patches()` unless
+/// told otherwise: fast marching folds far less than edge paths and bends
+/// shapes less, for about 1.5x the distance time (doc/quality.md).
+using Default_distance_tag = Fmm_distance_tag;
 
 namespace internal {
 

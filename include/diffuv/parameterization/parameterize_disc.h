@@ -7,11 +7,14 @@
 #include <diffuv/graph/edge_length_map.h>
 #include <diffuv/graph/heap_tags.h>
 #include <diffuv/parameterization/diffusion_coordinates.h>
+#include <diffuv/parameterization/repair_folds.h>
 #include <diffuv/patches/disc_topology.h>
 #include <diffuv/patches/four_sides.h>
 
 #include <boost/graph/graph_traits.hpp>
 
+#include <algorithm>
+#include <array>
 #include <vector>
 
 namespace diffuv {
@@ -21,7 +24,7 @@ namespace diffuv {
 /// The mesh is checked to be a disc (`check_disc()`), its boundary loop is cut
 /// into four sides at `corners` (`corners[0]` goes to (0,0), the others follow
 /// counter-clockwise, see four_sides.h) or, if `corners` is empty, at
-/// `equal_arc_corners()`; the diffusion coordinates of every vertex fill the chart.
+/// `equal_arc_corners()` moved by `separate_flat_triangles()`; the diffusion coordinates of every vertex fill the chart.
 ///
 /// \tparam TriangleMesh a model of `FaceListGraph` with internal indices and vertex points
 ///         (e.g. `CGAL::Surface_mesh`)
@@ -29,15 +32,21 @@ namespace diffuv {
 /// \param corners four boundary vertices, or none to choose them automatically
 /// \param atlas receives one chart holding every face and vertex of `tm`
 /// \param sides if not null, receives the four sides used
-/// \tparam DistanceTag the distance diffused from each side (distance_tags.h), graph by default
+/// \tparam DistanceTag the distance diffused from each side (distance_tags.h), `Default_distance_tag` (fast marching) by default
+/// \param repair whether and how folds are repaired (`repair_folds()`); on by default,
+///        `Repair_options{false}` gives the paper's raw method
+/// \param repair_report if not null, receives what the repair did; a map that
+///        still folds after the repair (numerically degenerate input only) is
+///        kept and reported there (`remaining_folded_faces`), not an error
 /// \returns the first problem met (not a disc, bad corners, ...) or `ok`; on failure
 ///          `atlas` is unchanged
-template <class TriangleMesh, class HeapTag = Fibonacci_heap_tag, class DistanceTag = Graph_distance_tag>
+template <class TriangleMesh, class HeapTag = Fibonacci_heap_tag, class DistanceTag = Default_distance_tag>
 Status parameterize_disc(const TriangleMesh& tm,
                          const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& corners,
                          Uv_atlas<TriangleMesh>& atlas,
                          Four_sides<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>* sides = nullptr,
-                         HeapTag = HeapTag(), DistanceTag = DistanceTag())
+                         HeapTag = HeapTag(), DistanceTag = DistanceTag(),
+                         const Repair_options& repair = Repair_options(), Repair_report* repair_report = nullptr)
 {
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
   using Point_2 = typename Uv_atlas<TriangleMesh>::Point_2;
@@ -48,8 +57,16 @@ Status parameterize_disc(const TriangleMesh& tm,
   const std::vector<vertex_descriptor> loop = counterclockwise_boundary(tm, boundary_loops(tm).front());
   if(loop.size() < 4)
     return Status(Status_code::border_too_short, std::to_string(loop.size()) + " boundary vertices");
-  const std::vector<vertex_descriptor> chosen =
-      corners.empty() ? equal_arc_corners(tm, get(CGAL::vertex_point, tm), loop) : corners;
+  std::vector<vertex_descriptor> chosen = corners;
+  if(corners.empty()) {
+    // Equal arcs, then no triangle left flat on one side (see separate_flat_triangles()).
+    chosen = equal_arc_corners(tm, get(CGAL::vertex_point, tm), loop);
+    std::array<std::size_t, 4> at{};
+    for(std::size_t c = 0; c < 4; ++c)
+      at[c] = static_cast<std::size_t>(std::find(loop.begin(), loop.end(), chosen[c]) - loop.begin());
+    separate_flat_triangles(tm, loop, at, [](auto) { return true; });
+    for(std::size_t c = 0; c < 4; ++c) chosen[c] = loop[at[c]];
+  }
 
   Four_sides<vertex_descriptor> four;
   status = sides_from_corners(loop, chosen, four);
@@ -60,6 +77,8 @@ Status parameterize_disc(const TriangleMesh& tm,
   Diffusion_coordinates<TriangleMesh, HeapTag, DistanceTag> coordinates(tm);
   status = coordinates.compute(four, edge_length_map(tm), boost::make_iterator_property_map(uv_of.begin(), index));
   if(!status) return status;
+  repair_folds(tm, get(CGAL::vertex_point, tm), four, boost::make_iterator_property_map(uv_of.begin(), index),
+               repair_report, repair);
 
   std::vector<vertex_descriptor> chart_vertices;
   std::vector<Point_2> chart_uv;

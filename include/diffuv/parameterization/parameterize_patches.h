@@ -9,6 +9,7 @@
 #include <diffuv/graph/edge_length_map.h>
 #include <diffuv/graph/heap_tags.h>
 #include <diffuv/parameterization/diffusion_coordinates.h>
+#include <diffuv/parameterization/repair_folds.h>
 #include <diffuv/patches/region_sides.h>
 #include <diffuv/patches/segmentation.h>
 
@@ -26,25 +27,29 @@ struct Patch_result {
   std::size_t chart = Uv_atlas<TriangleMesh>::no_chart;  ///< the patch's chart in the atlas
   Four_sides<typename boost::graph_traits<TriangleMesh>::vertex_descriptor> sides;
   Side_report side_report;           ///< how the corners were found
-  double milliseconds = 0;           ///< sides, four Dijkstra runs, (u,v) and chart (kd-tree)
+  Repair_report repair;              ///< what the fold repair did
+  double milliseconds = 0;           ///< sides, four distance runs, (u,v), repair and chart (kd-tree)
 };
 
 /// Parameterizes every patch of `seg` as a chart of `atlas`: canonical sides
 /// from the neighbouring regions (`region_sides()`), then the diffusion
 /// coordinates on the patch (a `CGAL::Face_filtered_graph`), with edge lengths
 /// computed once for the whole mesh, and distances of the kind `DistanceTag`
-/// (`Graph_distance_tag`, the paper's, by default; `Fmm_distance_tag`; `Exact_distance_tag`).
+/// (`Default_distance_tag` = `Fmm_distance_tag` by default; `Graph_distance_tag`, the paper's; `Exact_distance_tag`).
+///
+/// Folds are then repaired (`repair_folds()`) unless `repair.enabled` is false.
 ///
 /// A patch that fails (not a disc, too short a boundary) gets no chart; the
 /// others are still mapped.
 ///
 /// \returns #P results, one per patch
-template <class TriangleMesh, class VertexPointMap, class DistanceTag = Graph_distance_tag,
+template <class TriangleMesh, class VertexPointMap, class DistanceTag = Default_distance_tag,
           class HeapTag = Fibonacci_heap_tag>
 std::vector<Patch_result<TriangleMesh>> parameterize_patches(const TriangleMesh& tm,
                                                              const Segmentation<TriangleMesh>& seg,
                                                              VertexPointMap vpm, Uv_atlas<TriangleMesh>& atlas,
-                                                             DistanceTag = DistanceTag(), HeapTag = HeapTag())
+                                                             DistanceTag = DistanceTag(), HeapTag = HeapTag(),
+                                                             const Repair_options& repair = Repair_options())
 {
   using Patch = CGAL::Face_filtered_graph<TriangleMesh>;
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
@@ -65,6 +70,7 @@ std::vector<Patch_result<TriangleMesh>> parameterize_patches(const TriangleMesh&
     Diffusion_coordinates<Patch, HeapTag, DistanceTag> coordinates(patch);
     r.status = coordinates.compute(r.sides, lengths, boost::make_iterator_property_map(uv.begin(), pindex));
     if(!r.status) continue;
+    repair_folds(patch, vpm, r.sides, boost::make_iterator_property_map(uv.begin(), pindex), &r.repair, repair);
 
     std::vector<vertex_descriptor> chart_vertices(num_vertices(patch));
     for(vertex_descriptor v : vertices(patch)) chart_vertices[get(pindex, v)] = v;

@@ -30,6 +30,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -181,6 +182,98 @@ equal_arc_corners(const TriangleMesh& tm, VertexPointMap vpm,
   std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor> corners;
   for(std::size_t c = 0; c < 4; ++c) corners.push_back(loop[(start + k_of[c]) % n]);
   return corners;
+}
+
+
+/// Moves corners so that no triangle has its three vertices on one side.
+///
+/// Such a triangle (an "ear" of the border, or a face cut off by a chord) is
+/// flat in any map that sends each side onto a straight edge of the square.
+/// Its middle vertex along the side becomes a corner: one of the side's two
+/// corners moves there, whichever leaves fewer such triangles; this repeats
+/// while it helps (a border of ears only cannot be helped). The corners keep
+/// their cyclic order and stay distinct.
+///
+/// \tparam FaceGraph a model of `FaceGraph`
+/// \tparam InPatch a predicate on faces: whether a face belongs to the patch bounded by `loop`
+/// \param loop the patch's boundary, counter-clockwise
+/// \param corners four positions in `loop`, in counter-clockwise order; updated
+/// \returns how many times a corner moved
+template <class FaceGraph, class InPatch>
+std::size_t separate_flat_triangles(const FaceGraph& g,
+                                    const std::vector<typename boost::graph_traits<FaceGraph>::vertex_descriptor>& loop,
+                                    std::array<std::size_t, 4>& corners, InPatch in_patch)
+{
+  using vertex_descriptor = typename boost::graph_traits<FaceGraph>::vertex_descriptor;
+  const std::size_t n = loop.size();
+  std::map<vertex_descriptor, std::size_t> position;
+  for(std::size_t i = 0; i < n; ++i) position.emplace(loop[i], i);
+
+  // The faces with three border vertices, as loop positions.
+  std::vector<std::array<std::size_t, 3>> border_faces;
+  for(std::size_t i = 0; i < n; ++i)
+    for(auto h : CGAL::halfedges_around_target(halfedge(loop[i], g), g)) {
+      if(is_border(h, g) || !in_patch(face(h, g))) continue;
+      std::array<std::size_t, 3> t{};
+      std::size_t k = 0;
+      bool on_border = true;
+      for(vertex_descriptor v : CGAL::vertices_around_face(h, g)) {
+        const auto it = position.find(v);
+        if(it == position.end() || k == 3) { on_border = false; break; }
+        t[k++] = it->second;
+      }
+      if(on_border && k == 3) border_faces.push_back(t);
+    }
+  // Each such face is met from each of its vertices; keep it once.
+  for(auto& t : border_faces) std::sort(t.begin(), t.end());
+  std::sort(border_faces.begin(), border_faces.end());
+  border_faces.erase(std::unique(border_faces.begin(), border_faces.end()), border_faces.end());
+
+  // A face is flat if its three positions lie on one side; returns that side or 4.
+  auto flat_side = [&](const std::array<std::size_t, 3>& t, const std::array<std::size_t, 4>& c) {
+    for(std::size_t s = 0; s < 4; ++s) {
+      const std::size_t length = (c[(s + 1) % 4] + n - c[s]) % n;
+      if((t[0] + n - c[s]) % n <= length && (t[1] + n - c[s]) % n <= length && (t[2] + n - c[s]) % n <= length)
+        return s;
+    }
+    return std::size_t(4);
+  };
+  auto count_flat = [&](const std::array<std::size_t, 4>& c) {
+    std::size_t count = 0;
+    for(const auto& t : border_faces) count += flat_side(t, c) < 4;
+    return count;
+  };
+
+  // Greedy: move one of the two corners of a flat face's side onto the face's
+  // middle vertex, whichever leaves fewer flat faces; stop when no move helps
+  // (e.g. a border made of ears only), so this always terminates.
+  std::size_t moves = 0;
+  for(std::size_t flat = count_flat(corners); flat > 0;) {
+    std::size_t best_flat = flat;
+    std::array<std::size_t, 4> best = corners;
+    for(const auto& t : border_faces) {
+      const std::size_t s = flat_side(t, corners);
+      if(s == 4) continue;
+      std::array<std::size_t, 3> offset;
+      for(int k = 0; k < 3; ++k) offset[k] = (t[k] + n - corners[s]) % n;
+      std::sort(offset.begin(), offset.end());
+      const std::size_t middle = (corners[s] + offset[1]) % n;  // strictly inside the side
+      for(std::size_t c : {s, (s + 1) % 4}) {
+        std::array<std::size_t, 4> candidate = corners;
+        candidate[c] = middle;
+        const std::size_t candidate_flat = count_flat(candidate);
+        if(candidate_flat < best_flat) {
+          best_flat = candidate_flat;
+          best = candidate;
+        }
+      }
+    }
+    if(best_flat == flat) break;
+    corners = best;
+    flat = best_flat;
+    ++moves;
+  }
+  return moves;
 }
 
 } // namespace diffuv

@@ -28,6 +28,7 @@ struct Side_report {
   std::size_t merged = 0;   ///< junctions dropped (more than four runs)
   std::size_t split = 0;    ///< runs split at their middle (fewer than four runs)
   bool equal_arcs = false;  ///< no junction: corners by equal arc lengths from the sharpest vertex
+  std::size_t moved = 0;    ///< corners moved onto an ear so that no triangle is flat (separate_flat_triangles())
 };
 
 /// Computes the four sides of disc patch `p` from the runs of its neighbours.
@@ -131,6 +132,13 @@ Status region_sides(const TriangleMesh& tm, const Segmentation<TriangleMesh>& se
     ++r.split;
   }
 
+  // No triangle flat on one side: a corner may move onto an ear's tip.
+  const auto fim = get(boost::face_index, tm);
+  std::array<std::size_t, 4> corner_at = {corners[0], corners[1], corners[2], corners[3]};
+  const std::size_t sharp_index = static_cast<std::size_t>(std::find(corners.begin(), corners.end(), sharpest) - corners.begin());
+  r.moved = separate_flat_triangles(tm, loop.vertices, corner_at, [&](auto f) { return seg.face_patch[get(fim, f)] == p; });
+  corners.assign(corner_at.begin(), corner_at.end());
+
   // Canonical rotation: the sides' region keys, then their lengths.
   auto key_of = [&](std::size_t c) { // labels along side c, consecutive repeats removed
     std::vector<long long> key;
@@ -155,7 +163,7 @@ Status region_sides(const TriangleMesh& tm, const Segmentation<TriangleMesh>& se
   // With no junction, all four keys are equal: the sharpest vertex stays (0,0).
   std::size_t first = 0;
   if(r.equal_arcs) {
-    first = static_cast<std::size_t>(std::find(corners.begin(), corners.end(), sharpest) - corners.begin());
+    first = sharp_index;
   } else {
     for(std::size_t s = 1; s < 4; ++s)
       if(rotation_key(s) < rotation_key(first)) first = s;

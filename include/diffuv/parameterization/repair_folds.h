@@ -1,0 +1,358 @@
+// diffuv: make a patch's (u,v) map one-to-one while keeping the diffusion
+// coordinates wherever they are already valid.
+//
+// The paper's distance ratio folds where distance isolines bend around
+// singularities or follow the tessellation (issue #5, doc/quality.md). Repair:
+//  1. each side of the border must run monotonically along its edge of the
+//     square; a side that does not is re-spaced by arc length (CGAL's
+//     Square_border_arc_length_parameterizer_3 does the same for every side);
+//  2. the interior vertices of every folded triangle (flipped or degenerate,
+//     or around a vertex the map winds around twice), grown by rings, are re-solved as a
+//     convex-combination map (mean value weights, Floater 2003) with every
+//     other vertex fixed; the region grows until no fold remains;
+//  3. as a last resort every interior vertex is re-solved: with the border on
+//     the convex square and positive weights, Tutte/Floater's theorem makes
+//     that map an embedding. Triangles whose three vertices lie on one side
+//     are flat in any map onto the square; they are "forced" and reported.
+#ifndef DIFFUV_PARAMETERIZATION_REPAIR_FOLDS_H
+#define DIFFUV_PARAMETERIZATION_REPAIR_FOLDS_H
+
+#include <diffuv/error.h>
+#include <diffuv/metrics/distortion.h>
+#include <diffuv/patches/four_sides.h>
+
+#include <CGAL/boost/graph/iterator.h>
+
+#include <Eigen/SparseCore>
+#include <Eigen/SparseLU>
+
+#include <boost/graph/graph_traits.hpp>
+#include <boost/property_map/property_map.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace diffuv {
+
+/// How `repair_folds()` works.
+struct Repair_options {
+  bool enabled = true;            ///< false keeps the raw diffusion coordinates (the paper's method)
+  std::size_t initial_rings = 1;  ///< rings of vertices added around the first folds
+  std::size_t max_local_rounds = 6;  ///< local re-solves (rings doubling) before the whole patch is re-solved
+};
+
+/// What `repair_folds()` did to one patch (all zero when the repair is off).
+struct Repair_report {
+  std::size_t folded_faces = 0;        ///< faces flipped or degenerate, or around a vertex the map winds around twice, before the repair (forced ones excluded)
+  std::size_t forced_degenerate = 0;   ///< faces with all three vertices on one side: flat in any map onto the square
+  std::size_t moved_vertices = 0;      ///< interior vertices whose (u,v) changed
+  std::size_t moved_border_vertices = 0;  ///< border vertices re-spaced because their side was not monotone
+  std::size_t rounds = 0;              ///< linear solves
+  bool whole_patch = false;            ///< whether the last resort (every interior vertex re-solved) was needed
+  std::size_t remaining_folded_faces = 0;  ///< folds left (0 unless the last resort met a numerical limit)
+};
+
+namespace internal {
+
+/// The vertices of a patch by index, their sides, and the patch's triangles.
+template <class TriangleMesh>
+struct Repair_patch {
+  using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
+  std::vector<vertex_descriptor> vertex;       // by index
+  std::vector<std::uint8_t> side_mask;         // bit s set: on side s (u1, u2, v1, v2)
+  std::vector<std::array<std::size_t, 3>> triangle;
+  std::vector<bool> forced;                    // all three vertices on one side
+  std::vector<std::vector<std::size_t>> ring;  // neighbours of each vertex
+};
+
+/// Whether triangle t of (u, v) is counter-clockwise and not degenerate (area
+/// above 1e-14 of `total`, the threshold of measure_distortion).
+inline bool positive_triangle(const std::array<std::size_t, 3>& t, const std::vector<double>& u,
+                              const std::vector<double>& v, double total)
+{
+  const Uv_triangle uv_t = {Uv_point(u[t[0]], v[t[0]]), Uv_point(u[t[1]], v[t[1]]), Uv_point(u[t[2]], v[t[2]])};
+  const double a = signed_area(uv_t);
+  return !is_degenerate_area(a, total) && a > 0 && CGAL::orientation(uv_t[0], uv_t[1], uv_t[2]) == CGAL::LEFT_TURN;
+}
+
+} // namespace internal
+
+/// Repairs the folds of a disc patch's (u,v) map in place.
+///
+/// \tparam TriangleMesh a model of `FaceListGraph` with an internal vertex index
+///         (`CGAL::Surface_mesh`, a `CGAL::Face_filtered_graph` patch, ...)
+/// \param tm the patch (a disc), \param vpm its 3D points (for the weights and arc lengths)
+/// \param sides the four sides used for `uv`; border vertices are fixed on them
+/// \param uv read-write map from vertices to 2D points, initially the diffusion coordinates
+/// \returns `ok`, or `not_injective` (detail: how many folds remain) if folds
+///          survive even the last resort (only with numerically degenerate input)
+template <class TriangleMesh, class VertexPointMap, class UvMap>
+Status repair_folds(const TriangleMesh& tm, VertexPointMap vpm,
+                    const Four_sides<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& sides, UvMap uv,
+                    Repair_report* report = nullptr, const Repair_options& options = Repair_options())
+{
+  using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
+  using Point_2 = typename boost::property_traits<UvMap>::value_type;
+  using Point_3 = typename boost::property_traits<VertexPointMap>::value_type;
+  Repair_report local;
+  Repair_report& r = report ? *report : local;
+  r = Repair_report();
+  if(!options.enabled) return Status();  // the raw method: nothing to check or count
+
+  auto index = get(boost::vertex_index, tm);
+  const std::size_t n = num_vertices(tm);
+  internal::Repair_patch<TriangleMesh> p;
+  p.vertex.resize(n);
+  p.side_mask.assign(n, 0);
+  std::vector<Point_3> xyz(n);
+  std::vector<double> u(n), v(n);
+  for(vertex_descriptor vd : vertices(tm)) {
+    const std::size_t i = get(index, vd);
+    p.vertex[i] = vd;
+    xyz[i] = get(vpm, vd);
+    const auto q = get(uv, vd);
+    u[i] = CGAL::to_double(q.x());
+    v[i] = CGAL::to_double(q.y());
+  }
+  const std::array<const std::vector<vertex_descriptor>*, 4> side_of = {&sides.u1, &sides.u2, &sides.v1, &sides.v2};
+  for(std::size_t s = 0; s < 4; ++s)
+    for(vertex_descriptor vd : *side_of[s]) p.side_mask[get(index, vd)] |= static_cast<std::uint8_t>(1u << s);
+
+  std::vector<std::vector<std::size_t>> faces_of(n);
+  for(auto f : faces(tm)) {
+    std::array<std::size_t, 3> t{};
+    std::size_t k = 0;
+    for(vertex_descriptor vd : CGAL::vertices_around_face(halfedge(f, tm), tm)) {
+      if(k < 3) t[k] = get(index, vd);
+      ++k;
+    }
+    if(k != 3) return Status(Status_code::not_triangle_mesh, "a face of the patch has " + std::to_string(k) + " vertices");
+    for(std::size_t i : t) faces_of[i].push_back(p.triangle.size());
+    p.forced.push_back((p.side_mask[t[0]] & p.side_mask[t[1]] & p.side_mask[t[2]]) != 0);
+    p.triangle.push_back(t);
+  }
+  r.forced_degenerate = static_cast<std::size_t>(std::count(p.forced.begin(), p.forced.end(), true));
+  const std::vector<double> u0 = u, v0 = v;
+
+  auto write_back = [&]() {
+    std::size_t moved = 0, moved_border = 0;
+    for(std::size_t i = 0; i < n; ++i) {
+      if(u[i] == u0[i] && v[i] == v0[i]) continue;
+      (p.side_mask[i] ? moved_border : moved) += 1;
+      put(uv, p.vertex[i], Point_2(u[i], v[i]));
+    }
+    r.moved_vertices = moved;
+    r.moved_border_vertices = moved_border;
+  };
+
+  // Local defects: a triangle that is not counter-clockwise (or degenerate),
+  // or a vertex around which the triangles turn by more than once: 2 pi for
+  // an interior vertex, less than 2 pi for a border one (pi on a side, pi/2 at
+  // a corner). Theorem: a map of a disc without local defects whose border
+  // runs once around the square (monotone sides) is a local homeomorphism that
+  // is one-to-one on the border, hence one-to-one. So no overlap test is
+  // needed, before or after the repair (the tests check overlaps independently).
+  const double total_area = 1.;  // the unit square
+  std::vector<bool> bad_face(p.triangle.size()), bad_vertex(n);
+  auto find_defects = [&]() {
+    std::size_t count = 0;
+    for(std::size_t f = 0; f < p.triangle.size(); ++f) {
+      bad_face[f] = !p.forced[f] && !internal::positive_triangle(p.triangle[f], u, v, total_area);
+      count += bad_face[f];
+    }
+    for(std::size_t i = 0; i < n; ++i) {
+      double turn = 0;
+      for(std::size_t f : faces_of[i]) {
+        const auto& t = p.triangle[f];
+        const int k = t[0] == i ? 0 : (t[1] == i ? 1 : 2);
+        const std::size_t a = t[(k + 1) % 3], b = t[(k + 2) % 3];
+        const double ax = u[a] - u[i], ay = v[a] - v[i], bx = u[b] - u[i], by = v[b] - v[i];
+        turn += std::atan2(ax * by - ay * bx, ax * bx + ay * by);
+      }
+      bad_vertex[i] = p.side_mask[i] ? !(turn < 2 * CGAL_PI - 1e-6) : !(std::abs(turn - 2 * CGAL_PI) < 1e-6);
+      if(bad_vertex[i])
+        for(std::size_t f : faces_of[i]) count += !bad_face[f];
+    }
+    return count;
+  };
+
+  // Walking counter-clockwise, v1 has u increasing, u2 v increasing, v2 u
+  // decreasing, u1 v decreasing: each side runs once along its edge of the square.
+  struct Walk { const std::vector<vertex_descriptor>* side; bool along_u; bool increasing; };
+  const std::array<Walk, 4> walks = {Walk{&sides.v1, true, true}, Walk{&sides.u2, false, true},
+                                     Walk{&sides.v2, true, false}, Walk{&sides.u1, false, false}};
+  auto monotone = [&](const Walk& w) {
+    const std::vector<double>& c = w.along_u ? u : v;
+    for(std::size_t k = 1; k < w.side->size(); ++k) {
+      const double a = c[get(index, (*w.side)[k - 1])], b = c[get(index, (*w.side)[k])];
+      if(!(w.increasing ? a < b : a > b)) return false;
+    }
+    return true;
+  };
+
+  // The common case costs two linear passes: no local defect and monotone
+  // sides prove the map one-to-one, no overlap test needed.
+  const bool border_ok = std::all_of(walks.begin(), walks.end(), monotone);
+  r.folded_faces = find_defects();
+  if(r.folded_faces == 0 && border_ok) return Status();
+
+  // 1. A side that does not run monotonically is re-spaced by arc length.
+  for(const Walk& w : walks) {
+    if(monotone(w)) continue;
+    const auto& side = *w.side;
+    std::vector<double>& c = w.along_u ? u : v;
+    std::vector<double> arc(side.size(), 0.);
+    for(std::size_t k = 1; k < side.size(); ++k)
+      arc[k] = arc[k - 1] + std::sqrt(CGAL::to_double(CGAL::squared_distance(xyz[get(index, side[k - 1])],
+                                                                              xyz[get(index, side[k])])));
+    const double total = arc.back();
+    for(std::size_t k = 1; k + 1 < side.size(); ++k) {
+      const double t = total > 0 ? arc[k] / total : double(k) / double(side.size() - 1);
+      c[get(index, side[k])] = w.increasing ? t : 1. - t;
+    }
+  }
+
+  // Vertex adjacency for growing regions.
+  p.ring.resize(n);
+  for(const auto& t : p.triangle)
+    for(int k = 0; k < 3; ++k) {
+      p.ring[t[k]].push_back(t[(k + 1) % 3]);
+      p.ring[t[k]].push_back(t[(k + 2) % 3]);
+    }
+  for(auto& nb : p.ring) {
+    std::sort(nb.begin(), nb.end());
+    nb.erase(std::unique(nb.begin(), nb.end()), nb.end());
+  }
+
+  // The weights of a re-solved vertex: mean value weights (Floater 2003),
+  // w_ij = (tan(a/2) + tan(b/2)) / |x_i - x_j| with a and b the 3D angles at
+  // x_i next to edge ij. They follow the surface's shape (better angles than
+  // Tutte's uniform weights) and are positive, which is all Floater's
+  // embedding theorem needs. Uniform weights where an angle is undefined
+  // (a zero-length edge). (Symmetrised mean value weights would allow a
+  // Cholesky solve but measured worse angles: doc/quality.md.)
+  std::vector<std::pair<std::size_t, double>> row;
+  auto weights_of = [&](std::size_t i) {
+    row.clear();
+    for(std::size_t f : faces_of[i]) {
+      const auto& t = p.triangle[f];
+      const int k = t[0] == i ? 0 : (t[1] == i ? 1 : 2);
+      const std::size_t a = t[(k + 1) % 3], b = t[(k + 2) % 3];
+      const auto ea = xyz[a] - xyz[i], eb = xyz[b] - xyz[i];
+      const double la = std::sqrt(CGAL::to_double(ea * ea)), lb = std::sqrt(CGAL::to_double(eb * eb));
+      const double half_tan =
+          la > 0 && lb > 0 ? std::tan(std::acos(std::clamp(CGAL::to_double(ea * eb) / (la * lb), -1., 1.)) / 2) : 0.;
+      if(!(half_tan > 0) || !std::isfinite(half_tan)) {
+        row.clear();
+        for(std::size_t g : faces_of[i])
+          for(std::size_t j : p.triangle[g])
+            if(j != i) row.emplace_back(j, 1.);
+        return;
+      }
+      row.emplace_back(a, half_tan / la);
+      row.emplace_back(b, half_tan / lb);
+    }
+  };
+
+  // Re-solves the vertices flagged in `free_vertex` with every other vertex fixed.
+  auto solve = [&](const std::vector<bool>& free_vertex) -> bool {
+    std::vector<std::size_t> local_of(n, n);
+    std::vector<std::size_t> unknowns;
+    for(std::size_t i = 0; i < n; ++i)
+      if(free_vertex[i]) {
+        local_of[i] = unknowns.size();
+        unknowns.push_back(i);
+      }
+    if(unknowns.empty()) return true;
+    ++r.rounds;
+    const auto m = static_cast<Eigen::Index>(unknowns.size());
+    std::vector<Eigen::Triplet<double>> entries;
+    Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(m, 2);
+    for(std::size_t li = 0; li < unknowns.size(); ++li) {
+      const std::size_t i = unknowns[li];
+      const auto row_index = static_cast<Eigen::Index>(li);
+      weights_of(i);
+      double diagonal = 0;
+      for(const auto& [j, w] : row) {
+        diagonal += w;
+        if(local_of[j] < n) {
+          entries.emplace_back(row_index, static_cast<Eigen::Index>(local_of[j]), -w);
+        } else {
+          rhs(row_index, 0) += w * u[j];
+          rhs(row_index, 1) += w * v[j];
+        }
+      }
+      entries.emplace_back(row_index, row_index, diagonal);
+    }
+    Eigen::SparseMatrix<double> a(m, m);
+    a.setFromTriplets(entries.begin(), entries.end());
+    Eigen::SparseLU<Eigen::SparseMatrix<double>> lu;
+    lu.compute(a);
+    if(lu.info() != Eigen::Success) return false;
+    const Eigen::MatrixXd x = lu.solve(rhs);
+    if(lu.info() != Eigen::Success || !x.allFinite()) return false;
+    for(std::size_t li = 0; li < unknowns.size(); ++li) {
+      u[unknowns[li]] = x(static_cast<Eigen::Index>(li), 0);
+      v[unknowns[li]] = x(static_cast<Eigen::Index>(li), 1);
+    }
+    return true;
+  };
+
+  // 2. Local re-solves around the defects, rings doubling; the region only
+  //    grows, and stops growing locally at a third of the patch.
+  std::vector<bool> region(n, false);
+  std::size_t region_size = 0;
+  std::size_t rings = std::max<std::size_t>(options.initial_rings, 1);
+  std::size_t defects = find_defects();
+  auto add = [&](std::size_t i, std::vector<std::size_t>& to) {
+    if(p.side_mask[i] || region[i]) return;
+    region[i] = true;
+    ++region_size;
+    to.push_back(i);
+  };
+  // Folds over a tenth of the patch are not local: go straight to step 3.
+  const std::size_t local_rounds = 10 * defects > p.triangle.size() ? 0 : options.max_local_rounds;
+  for(std::size_t round = 0; defects > 0 && round < local_rounds; ++round, rings *= 2) {
+    std::vector<std::size_t> front;
+    for(std::size_t i = 0; i < n; ++i)
+      if(bad_vertex[i]) {
+        add(i, front);
+        for(std::size_t j : p.ring[i]) add(j, front);  // a border vertex grows from its neighbours
+      }
+    for(std::size_t f = 0; f < p.triangle.size(); ++f)
+      if(bad_face[f])
+        for(std::size_t i : p.triangle[f]) {
+          add(i, front);
+          for(std::size_t j : p.ring[i]) add(j, front);  // a defect on the border grows from its neighbours
+        }
+    for(std::size_t step = 0; step < rings; ++step) {
+      std::vector<std::size_t> next;
+      for(std::size_t i : front)
+        for(std::size_t j : p.ring[i]) add(j, next);
+      front.swap(next);
+    }
+    if(3 * region_size > n || !solve(region)) break;
+    defects = find_defects();
+  }
+
+  // 3. Last resort: every interior vertex.
+  if(defects > 0) {
+    r.whole_patch = true;
+    std::vector<bool> interior(n);
+    for(std::size_t i = 0; i < n; ++i) interior[i] = p.side_mask[i] == 0;
+    if(solve(interior)) defects = find_defects();
+  }
+  r.remaining_folded_faces = defects;
+  write_back();
+  if(r.remaining_folded_faces > 0)
+    return Status(Status_code::not_injective, std::to_string(r.remaining_folded_faces) + " folded faces remain");
+  return Status();
+}
+
+} // namespace diffuv
+
+#endif // DIFFUV_PARAMETERIZATION_REPAIR_FOLDS_H

@@ -1,0 +1,240 @@
+// Tests of the fold repair (repair_folds.h) and of the corners that avoid
+// flat triangles (separate_flat_triangles()).
+#include "test_data.h"
+
+#include <diffuv/metrics/distortion.h>
+#include <diffuv/parameterization/parameterize_disc.h>
+#include <diffuv/parameterization/repair_folds.h>
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+namespace {
+
+using diffuv_test::Mesh;
+using diffuv_test::Point_2;
+using diffuv_test::Point_3;
+using diffuv_test::cgal_mesh;
+using diffuv_test::grid_vertex;
+using diffuv_test::make_grid;
+using vertex_descriptor = Mesh::Vertex_index;
+
+// The four sides of an n x n grid with its corners at the square's corners.
+diffuv::Four_sides<vertex_descriptor> grid_sides(const Mesh& grid, std::size_t n)
+{
+  const std::vector<vertex_descriptor> loop = diffuv::counterclockwise_boundary(grid, *diffuv::boundary_loops(grid).begin());
+  diffuv::Four_sides<vertex_descriptor> sides;
+  EXPECT_TRUE(diffuv::sides_from_corners(loop, {grid_vertex(n, 0, 0), grid_vertex(n, n, 0), grid_vertex(n, n, n), grid_vertex(n, 0, n)}, sides).ok());
+  return sides;
+}
+
+// The grid's own coordinates: the map every convex-combination solve with
+// mean value weights reproduces on a flat mesh (linear precision).
+std::vector<Point_2> grid_uv(const Mesh& grid)
+{
+  std::vector<Point_2> uv;
+  for(vertex_descriptor v : vertices(grid)) uv.emplace_back(grid.point(v).x(), grid.point(v).y());
+  return uv;
+}
+
+diffuv::Distortion_summary measure(const Mesh& m, const std::vector<Point_2>& uv)
+{
+  return diffuv::measure_distortion(m, faces(m), m.points(),
+                                    boost::make_iterator_property_map(uv.begin(), get(boost::vertex_index, m)));
+}
+
+TEST(Repair, AFoldInAFlatGridIsRepairedExactlyAndOnlyThere)
+{
+  const std::size_t n = 20;
+  const Mesh grid = make_grid(n, n);
+  const auto sides = grid_sides(grid, n);
+  std::vector<Point_2> uv = grid_uv(grid);
+  // Push one interior vertex across three of its neighbours: its triangles flip.
+  const vertex_descriptor pushed = grid_vertex(n, 5, 5);
+  uv[pushed] = Point_2(0.40, 0.33);
+  ASSERT_GT(measure(grid, uv).flipped, 0u);
+
+  diffuv::Repair_report report;
+  ASSERT_TRUE(diffuv::repair_folds(grid, grid.points(), sides, boost::make_iterator_property_map(uv.begin(), get(boost::vertex_index, grid)), &report).ok());
+  const auto d = measure(grid, uv);
+  EXPECT_EQ(d.flipped, 0u);
+  EXPECT_EQ(d.overlapping_pairs, 0u);
+  EXPECT_EQ(d.degenerate, 0u);
+  EXPECT_GT(report.folded_faces, 0u);
+  EXPECT_FALSE(report.whole_patch);
+  EXPECT_EQ(report.moved_border_vertices, 0u);
+  // Local: a few rings around the fold, not the grid's 19 x 19 interior vertices.
+  EXPECT_GE(report.moved_vertices, 1u);
+  EXPECT_LT(report.moved_vertices, 60u);
+  const std::vector<Point_2> expected = grid_uv(grid);
+  for(vertex_descriptor v : vertices(grid)) {
+    EXPECT_NEAR(uv[v].x(), expected[v].x(), 1e-9) << v;
+    EXPECT_NEAR(uv[v].y(), expected[v].y(), 1e-9) << v;
+  }
+}
+
+TEST(Repair, ValidRegionsAreKeptBitForBit)
+{
+  // A non-linear but valid map (u^2 along x) with one fold far from the
+  // corner (15, 15): vertices well away from the fold keep their exact uv.
+  const std::size_t n = 24;
+  const Mesh grid = make_grid(n, n);
+  const auto sides = grid_sides(grid, n);
+  std::vector<Point_2> uv;
+  for(vertex_descriptor v : vertices(grid)) uv.emplace_back(grid.point(v).x() * grid.point(v).x(), grid.point(v).y());
+  const std::vector<Point_2> before = uv;
+  uv[grid_vertex(n, 4, 4)] = Point_2(0.2, 0.2);
+  diffuv::Repair_report report;
+  ASSERT_TRUE(diffuv::repair_folds(grid, grid.points(), sides, boost::make_iterator_property_map(uv.begin(), get(boost::vertex_index, grid)), &report).ok());
+  EXPECT_TRUE(measure(grid, uv).injective());
+  for(std::size_t j = 15; j < n; ++j)
+    for(std::size_t i = 15; i < n; ++i) {
+      const vertex_descriptor v = grid_vertex(n, i, j);
+      EXPECT_EQ(uv[v], before[v]) << i << ' ' << j;
+    }
+}
+
+TEST(Repair, AScrambledMapFallsBackToTheWholePatch)
+{
+  const std::size_t n = 12;
+  const Mesh grid = make_grid(n, n);
+  const auto sides = grid_sides(grid, n);
+  std::vector<Point_2> uv = grid_uv(grid);
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> unit(0., 1.);
+  for(std::size_t j = 1; j < n; ++j)
+    for(std::size_t i = 1; i < n; ++i) uv[grid_vertex(n, i, j)] = Point_2(unit(random), unit(random));
+  diffuv::Repair_report report;
+  ASSERT_TRUE(diffuv::repair_folds(grid, grid.points(), sides, boost::make_iterator_property_map(uv.begin(), get(boost::vertex_index, grid)), &report).ok());
+  EXPECT_TRUE(report.whole_patch);
+  EXPECT_EQ(report.moved_vertices, (n - 1) * (n - 1));
+  EXPECT_TRUE(measure(grid, uv).injective());
+  const std::vector<Point_2> expected = grid_uv(grid);
+  for(vertex_descriptor v : vertices(grid)) EXPECT_NEAR(CGAL::squared_distance(uv[v], expected[v]), 0., 1e-18) << v;
+}
+
+TEST(Repair, ASideOutOfOrderIsRespacedByArcLength)
+{
+  const std::size_t n = 10;
+  const Mesh grid = make_grid(n, n);
+  const auto sides = grid_sides(grid, n);
+  std::vector<Point_2> uv = grid_uv(grid);
+  std::swap(uv[grid_vertex(n, 3, 0)], uv[grid_vertex(n, 4, 0)]); // side v1 runs backwards there
+  diffuv::Repair_report report;
+  ASSERT_TRUE(diffuv::repair_folds(grid, grid.points(), sides, boost::make_iterator_property_map(uv.begin(), get(boost::vertex_index, grid)), &report).ok());
+  EXPECT_EQ(report.moved_border_vertices, 2u);
+  EXPECT_NEAR(uv[grid_vertex(n, 3, 0)].x(), 0.3, 1e-12);
+  EXPECT_NEAR(uv[grid_vertex(n, 4, 0)].x(), 0.4, 1e-12);
+  EXPECT_EQ(uv[grid_vertex(n, 4, 0)].y(), 0.);
+  EXPECT_TRUE(measure(grid, uv).injective());
+}
+
+TEST(Repair, OffGivesThePapersRawCoordinates)
+{
+  // --no-repair --distance graph: exactly the diffusion coordinates of the paper.
+  const Mesh& mesh = cgal_mesh("lion-head.off");
+  diffuv::Uv_atlas<Mesh> raw(mesh);
+  diffuv::Four_sides<vertex_descriptor> sides;
+  diffuv::Repair_report report;
+  diffuv::Repair_options off;
+  off.enabled = false;
+  ASSERT_TRUE(diffuv::parameterize_disc(mesh, {}, raw, &sides, diffuv::Fibonacci_heap_tag(), diffuv::Graph_distance_tag(), off, &report).ok());
+  EXPECT_EQ(report.moved_vertices, 0u);
+  EXPECT_GT(diffuv::measure_distortion(mesh, faces(mesh), mesh.points(), raw.vertex_uv_map()).flipped, 1000u);
+  std::vector<Point_2> expected(num_vertices(mesh));
+  ASSERT_TRUE(diffuv::diffusion_coordinates(mesh, sides, diffuv::edge_length_map(mesh),
+                                            boost::make_iterator_property_map(expected.begin(), get(boost::vertex_index, mesh)))
+                  .ok());
+  auto uv = raw.vertex_uv_map();
+  for(vertex_descriptor v : vertices(mesh)) EXPECT_EQ(get(uv, v), expected[v]) << v;
+}
+
+TEST(Repair, AMapWithoutFoldsIsNotTouched)
+{
+  const Mesh& mesh = cgal_mesh("nefertiti.off");
+  diffuv::Uv_atlas<Mesh> repaired(mesh), raw(mesh);
+  diffuv::Repair_report report;
+  diffuv::Repair_options off;
+  off.enabled = false;
+  ASSERT_TRUE(diffuv::parameterize_disc(mesh, {}, repaired, nullptr, diffuv::Fibonacci_heap_tag(), diffuv::Fmm_distance_tag(), diffuv::Repair_options(), &report).ok());
+  ASSERT_TRUE(diffuv::parameterize_disc(mesh, {}, raw, nullptr, diffuv::Fibonacci_heap_tag(), diffuv::Fmm_distance_tag(), off).ok());
+  EXPECT_EQ(report.folded_faces, 0u);
+  EXPECT_EQ(report.rounds, 0u);
+  for(vertex_descriptor v : vertices(mesh)) EXPECT_EQ(get(repaired.vertex_uv_map(), v), get(raw.vertex_uv_map(), v));
+}
+
+// The issue's meshes: the default pipeline leaves no fold, and with automatic
+// corners no triangle flat on a side; every distance backend too.
+class Repair_on : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(Repair_on, DefaultsAreInjective)
+{
+  const Mesh& mesh = cgal_mesh(GetParam());
+  for(int backend = 0; backend < 2; ++backend) {
+    diffuv::Uv_atlas<Mesh> atlas(mesh);
+    diffuv::Repair_report report;
+    const diffuv::Status status =
+        backend == 0 ? diffuv::parameterize_disc(mesh, {}, atlas, nullptr, diffuv::Fibonacci_heap_tag(), diffuv::Default_distance_tag(), diffuv::Repair_options(), &report)
+                     : diffuv::parameterize_disc(mesh, {}, atlas, nullptr, diffuv::Fibonacci_heap_tag(), diffuv::Graph_distance_tag(), diffuv::Repair_options(), &report);
+    ASSERT_TRUE(status.ok()) << status.what();
+    const auto d = diffuv::measure_distortion(mesh, faces(mesh), mesh.points(), atlas.vertex_uv_map());
+    EXPECT_EQ(d.flipped, 0u) << GetParam() << " backend " << backend;
+    EXPECT_EQ(d.overlapping_pairs, 0u) << GetParam() << " backend " << backend;
+    EXPECT_EQ(d.degenerate, 0u) << GetParam() << " backend " << backend;
+    EXPECT_EQ(report.forced_degenerate, 0u);
+    EXPECT_EQ(report.remaining_folded_faces, 0u);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(IssueMeshes, Repair_on,
+                         ::testing::Values("nefertiti.off", "mushroom.off", "three_peaks.off", "lion-head.off",
+                                           "mannequin-devil.off"));
+
+// A 4 x 4 grid with an ear glued under its bottom side: the ear's three
+// vertices are consecutive on the border.
+Mesh grid_with_ear(vertex_descriptor& tip)
+{
+  Mesh m = make_grid(4, 4);
+  tip = m.add_vertex(Point_3(0.625, -0.2, 0.));
+  m.add_face(grid_vertex(4, 3, 0), grid_vertex(4, 2, 0), tip); // below edge (2,0)-(3,0), counter-clockwise
+  return m;
+}
+
+TEST(FlatTriangles, AGivenCornerLeavesTheEarFlatAndItIsCountedAsForced)
+{
+  vertex_descriptor tip;
+  const Mesh m = grid_with_ear(tip);
+  diffuv::Uv_atlas<Mesh> atlas(m);
+  diffuv::Repair_report report;
+  ASSERT_TRUE(diffuv::parameterize_disc(m, {grid_vertex(4, 0, 0), grid_vertex(4, 4, 0), grid_vertex(4, 4, 4), grid_vertex(4, 0, 4)},
+                                        atlas, nullptr, diffuv::Fibonacci_heap_tag(), diffuv::Default_distance_tag(),
+                                        diffuv::Repair_options(), &report)
+                  .ok());
+  EXPECT_EQ(report.forced_degenerate, 1u);
+  const auto d = diffuv::measure_distortion(m, faces(m), m.points(), atlas.vertex_uv_map());
+  EXPECT_EQ(d.degenerate, 1u);
+  EXPECT_EQ(d.flipped, 0u);
+  EXPECT_EQ(d.overlapping_pairs, 0u);
+}
+
+TEST(FlatTriangles, AutomaticCornersPutACornerOnTheEarsTip)
+{
+  vertex_descriptor tip;
+  const Mesh m = grid_with_ear(tip);
+  const std::vector<vertex_descriptor> loop = diffuv::counterclockwise_boundary(m, *diffuv::boundary_loops(m).begin());
+  std::array<std::size_t, 4> corners{};
+  const std::vector<vertex_descriptor> given = {grid_vertex(4, 0, 0), grid_vertex(4, 4, 0), grid_vertex(4, 4, 4), grid_vertex(4, 0, 4)};
+  for(std::size_t c = 0; c < 4; ++c) corners[c] = static_cast<std::size_t>(std::find(loop.begin(), loop.end(), given[c]) - loop.begin());
+  EXPECT_EQ(diffuv::separate_flat_triangles(m, loop, corners, [](auto) { return true; }), 1u);
+  EXPECT_TRUE(std::find(corners.begin(), corners.end(),
+                        static_cast<std::size_t>(std::find(loop.begin(), loop.end(), tip) - loop.begin())) != corners.end());
+
+  diffuv::Uv_atlas<Mesh> atlas(m);
+  diffuv::Repair_report report;
+  ASSERT_TRUE(diffuv::parameterize_disc(m, {}, atlas, nullptr, diffuv::Fibonacci_heap_tag(), diffuv::Default_distance_tag(), diffuv::Repair_options(), &report).ok());
+  EXPECT_EQ(report.forced_degenerate, 0u);
+  EXPECT_TRUE(diffuv::measure_distortion(m, faces(m), m.points(), atlas.vertex_uv_map()).injective());
+}
+
+} // namespace
