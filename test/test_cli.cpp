@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -369,6 +370,49 @@ TEST_F(Tool, AnOutputPathThatIsAFileIsRefused)
   EXPECT_EQ(r.code, 3);
   EXPECT_EQ(r.err, "diffuv: error: cannot write " + file + ": exists and is not a directory\n");
   EXPECT_EQ(slurp(file), "not a folder");
+}
+
+} // namespace
+
+namespace {
+
+TEST_F(Tool, CompareRunsEveryMethodOnTheSamePatches)
+{
+  const Tool_run r = run("compare " + data_path("meshes/nefertiti.off") + " --corners " +
+                         data_path("selections/square_corners.selection.txt") + " --runs 1 -o " + out_dir().string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  for(const char* method : {"diffuv ", "tutte ", "mean_value ", "authalic ", "conformal ", "lscm ", "arap "}) {
+    const auto at = r.out.find(std::string("\n") + method);
+    ASSERT_NE(at, std::string::npos) << method << r.out;
+    const std::string row = r.out.substr(at + 1, r.out.find('\n', at + 1) - at - 1);
+    EXPECT_EQ(row.substr(row.size() - 3), "yes") << row; // every method is one-to-one on nefertiti
+    EXPECT_TRUE(fs::exists(out_dir() / ("nefertiti." + std::string(method, std::strlen(method) - 1) + ".obj")));
+  }
+  // The paper's raw method folds with these corners; the default does not.
+  const Tool_run raw = run("compare " + data_path("meshes/nefertiti.off") + " --corners " +
+                           data_path("selections/square_corners.selection.txt") + " --runs 1 --methods diffuv-graph-raw,diffuv");
+  ASSERT_EQ(raw.code, 0) << raw.err;
+  EXPECT_NE(raw.out.find("diffuv-graph-raw"), std::string::npos);
+  EXPECT_NE(raw.out.find(" no\n"), std::string::npos) << raw.out;
+}
+
+TEST_F(Tool, CompareSumsOverThePatchesOfAClosedMesh)
+{
+  const Tool_run r = run("compare " + data_path("meshes/cow.off") + " --runs 1 --methods diffuv,tutte");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("14 patches"), std::string::npos) << r.out;
+  const auto at = r.out.find("\ndiffuv ");
+  ASSERT_NE(at, std::string::npos);
+  EXPECT_NE(r.out.substr(at, r.out.find('\n', at + 1) - at).find("yes"), std::string::npos) << r.out;
+}
+
+TEST_F(Tool, CompareRefusesUnknownOrRepeatedMethods)
+{
+  for(const char* methods : {"bogus", "tutte,tutte", "diffuv-foo", ""}) {
+    const Tool_run r = run("compare " + data_path("meshes/nefertiti.off") + " --methods '" + methods + "'");
+    EXPECT_EQ(r.code, 2) << methods << r.err;
+    EXPECT_NE(r.err.find("--methods"), std::string::npos) << r.err;
+  }
 }
 
 } // namespace

@@ -4,6 +4,7 @@
 #include "inputs.h"
 
 #include <diffuv/atlas/Uv_atlas.h>
+#include <diffuv/cgal/Diffusion_parameterizer_3.h>
 #include <diffuv/compare/cgal_parameterizers.h>
 #include <diffuv/io/atomic_file.h>
 #include <diffuv/io/selection_file.h>
@@ -208,7 +209,8 @@ void run_compare(const Compare_options& options)
         else uv = run(diffuv::Fmm_distance_tag());
         if(uv) {
           chart_vertices.resize(num_vertices(patch));
-          for(vertex_descriptor v : vertices(patch)) chart_vertices[get(boost::vertex_index, patch, v)] = v;
+          const auto pindex = get(boost::vertex_index, patch);  // the patch's own 0..n-1 indices
+          for(vertex_descriptor v : vertices(patch)) chart_vertices[get(pindex, v)] = v;
           chart_uv = std::move(*uv);
           r.moved += report.moved_vertices + report.moved_border_vertices;
         }
@@ -219,7 +221,7 @@ void run_compare(const Compare_options& options)
           const auto map = diffuv::cgal_parameterize_patch(mesh, seg.patch_faces[p], mesh.points(), s.corners,
                                                            method.cgal, uv_map);
           if(!map.ok()) {
-            why = std::string("CGAL error ") + std::to_string(int(map.error));
+            why = std::string("CGAL: ") + diffuv::cgal_error_message(map.error);
             break;
           }
           times.push_back(map.milliseconds);
@@ -260,6 +262,11 @@ void run_compare(const Compare_options& options)
       r.total.stretch_l2 = std::sqrt(r.l2_sum / r.area);
     }
   }
+
+  // Nothing mapped at all: an error, as for diffuv param (and nothing is written).
+  if(std::all_of(results.begin(), results.end(), [&](const Method_result& r) { return r.failed == seg.number_of_patches(); }))
+    throw diffuv::Input_error(in.labels_path.empty() ? in.path : in.labels_path, 0,
+                              "no method could map any patch; the first reason: " + results.front().first_failure);
 
   // Everything is computed before anything is written: all files or none.
   if(!options.output.empty()) {
