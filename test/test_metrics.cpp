@@ -522,3 +522,37 @@ TEST(Metrics, BoxOverlapCountEqualsBruteForceOnFoldedChart)
   EXPECT_GT(s.flipped, 0u);
   EXPECT_FALSE(s.injective());
 }
+
+namespace {
+
+TEST(Distortion, TwoHalvesCombineIntoTheWhole)
+{
+  // Angle distortion is scale-free, so measuring a chart in two halves and
+  // combining them gives the whole chart's counts, angle mean and maximum.
+  const Mesh& mesh = diffuv_test::cgal_mesh("mushroom.off");
+  std::vector<Point_2> uv;
+  std::mt19937 random(3);
+  std::uniform_real_distribution<double> jitter(-0.01, 0.01);
+  for(Vertex v : vertices(mesh)) uv.emplace_back(mesh.point(v).x() + jitter(random), mesh.point(v).z() + jitter(random));
+  const auto uv_map = boost::make_iterator_property_map(uv.begin(), get(boost::vertex_index, mesh));
+  const std::vector<Mesh::Face_index> all(faces(mesh).begin(), faces(mesh).end());
+  const std::vector<Mesh::Face_index> first(all.begin(), all.begin() + all.size() / 3), second(all.begin() + all.size() / 3, all.end());
+  const auto whole = diffuv::measure_distortion(mesh, all, mesh.points(), uv_map);
+  const auto a = diffuv::measure_distortion(mesh, first, mesh.points(), uv_map);
+  const auto b = diffuv::measure_distortion(mesh, second, mesh.points(), uv_map);
+  const auto sum = diffuv::combined(a, b);
+  EXPECT_EQ(sum.faces, whole.faces);
+  EXPECT_EQ(sum.degenerate, whole.degenerate);
+  EXPECT_EQ(sum.flipped, a.flipped + b.flipped); // each half flips against its own majority
+  EXPECT_NEAR(sum.measured_area, whole.measured_area, 1e-9 * whole.measured_area);
+  EXPECT_NEAR(sum.angle_mean, whole.angle_mean, 1e-9 * whole.angle_mean);
+  EXPECT_EQ(sum.angle_max, whole.angle_max);
+  EXPECT_GT(sum.angle_mean, 1.);
+  // Combining with nothing changes nothing.
+  const auto same = diffuv::combined(diffuv::Distortion_summary(), whole);
+  EXPECT_EQ(same.angle_mean, whole.angle_mean);
+  EXPECT_EQ(same.stretch_l2, whole.stretch_l2);
+  EXPECT_EQ(same.overlapping_pairs, whole.overlapping_pairs);
+}
+
+} // namespace

@@ -104,7 +104,6 @@ struct Method_result {
   std::size_t failed = 0;   // patches without a map
   std::string first_failure;
   diffuv::Distortion_summary total;
-  double area = 0, angle_sum = 0, area_sum = 0, l2_sum = 0;
   std::size_t moved = 0;    // diffuv: vertices moved by the repair
 };
 
@@ -238,28 +237,8 @@ void run_compare(const Compare_options& options)
       }
       r.milliseconds += ms;
       for(std::size_t i = 0; i < chart_vertices.size(); ++i) uv_of[chart_vertices[i].idx()] = chart_uv[i];
-      std::vector<diffuv::Triangle_distortion> per_face;
-      const diffuv::Distortion_summary d =
-          diffuv::measure_distortion(mesh, seg.patch_faces[p], mesh.points(), uv_map, &per_face);
-      double area = 0;
-      for(const auto& t : per_face) area += t.area_3d;
-      r.total.faces += d.faces;
-      r.total.flipped += d.flipped;
-      r.total.degenerate += d.degenerate;
-      r.total.overlapping_pairs += d.overlapping_pairs;
-      r.total.angle_max = std::max(r.total.angle_max, d.angle_max);
-      r.total.area_max = std::max(r.total.area_max, d.area_max);
-      r.total.stretch_linf = std::max(r.total.stretch_linf, d.stretch_linf);
-      r.area += area;
-      r.angle_sum += d.angle_mean * area;
-      r.area_sum += d.area_mean * area;
-      r.l2_sum += d.stretch_l2 * d.stretch_l2 * area;
+      r.total = diffuv::combined(r.total, diffuv::measure_distortion(mesh, seg.patch_faces[p], mesh.points(), uv_map));
       r.atlas->add_chart(seg.patch_faces[p], std::move(chart_vertices), std::move(chart_uv));
-    }
-    if(r.area > 0) {
-      r.total.angle_mean = r.angle_sum / r.area;
-      r.total.area_mean = r.area_sum / r.area;
-      r.total.stretch_l2 = std::sqrt(r.l2_sum / r.area);
     }
   }
 
@@ -325,8 +304,7 @@ void add_compare_command(CLI::App& app)
       ->check(CLI::Range(1, 1000))
       ->capture_default_str();
   cmd->add_option("-o,--output", options->output, "Also write each method's map as OUTPUT/<mesh>.<method>.obj")
-      ->check(CLI::Validator([](const std::string& s) { return s.empty() ? "the output folder name is empty" : ""; },
-                             "DIR"));
+      ->check(output_folder_check());
   cmd->footer("Times: diffuv's four distance runs, ratios and repair; CGAL's parameterize() call. Neither includes "
               "reading, patching, choosing corners or copying the patch. Metrics: the same measure_distortion() for "
               "every method (doc/quality.md).\nExit codes: 0 ok, 1 bad input, 2 bad command line, 3 cannot write, "

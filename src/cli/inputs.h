@@ -63,6 +63,12 @@ inline void add_patch_options(CLI::App* cmd, Patch_cli_options& o)
   cmd->add_flag("--strict", o.strict, "Report a region that is not a disc instead of cutting it into discs");
 }
 
+/// Checks an output folder option: an empty name is a usage error.
+inline CLI::Validator output_folder_check()
+{
+  return CLI::Validator([](const std::string& s) { return s.empty() ? "the output folder name is empty" : ""; }, "DIR");
+}
+
 /// Reads the mesh and its regions: `--labels` first, else painted colours or
 /// integer face properties of the mesh file.
 inline Input_mesh read_input(const std::string& path, const Patch_cli_options& o)

@@ -186,7 +186,6 @@ void print_row(const std::string& name, const std::string& label, std::size_t ve
 struct Chart_measure {
   diffuv::Distortion_summary summary;
   std::vector<diffuv::Triangle_distortion> per_face; // one per face of the chart, in chart order
-  double area = 0;                                   // 3D area of the chart
 };
 
 // #P entries; a patch without a chart gets an empty measure.
@@ -200,7 +199,6 @@ std::vector<Chart_measure> measure_charts(const Input_mesh& in, const Parameteri
     Chart_measure& m = measures[p];
     m.summary = diffuv::measure_distortion(in.mesh, chart.faces, in.mesh.points(),
                                            result.atlas->chart_uv_map(r.chart), &m.per_face);
-    for(const auto& d : m.per_face) m.area += d.area_3d;
   }
   return measures;
 }
@@ -338,7 +336,7 @@ void run_param(const Param_options& options)
               "area_max", "L2", "Linf", "injective");
 
   diffuv::Distortion_summary total;
-  double area_sum = 0, angle_sum = 0, areadist_sum = 0, l2_sum = 0, patch_ms = 0;
+  double patch_ms = 0;
   std::size_t vertex_entries = 0, moved = 0, forced = 0;
   for(std::size_t p = 0; p < result.patches.size(); ++p) {
     const auto& r = result.patches[p];
@@ -351,7 +349,6 @@ void run_param(const Param_options& options)
     }
     const auto& chart = atlas.chart(r.chart);
     const diffuv::Distortion_summary& d = measures[p].summary;
-    const double area = measures[p].area;
     const std::size_t patch_moved = r.repair.moved_vertices + r.repair.moved_border_vertices;
     print_row(std::to_string(p), label, chart.vertices.size(), chart.faces.size(),
               corner_rule(r.side_report, !options.corners.empty()), r.milliseconds, patch_moved,
@@ -359,23 +356,8 @@ void run_param(const Param_options& options)
     moved += patch_moved;
     forced += r.repair.forced_degenerate;
     vertex_entries += chart.vertices.size();
-    total.faces += d.faces;
-    total.flipped += d.flipped;
-    total.degenerate += d.degenerate;
-    total.overlapping_pairs += d.overlapping_pairs;
-    total.angle_max = std::max(total.angle_max, d.angle_max);
-    total.area_max = std::max(total.area_max, d.area_max);
-    total.stretch_linf = std::max(total.stretch_linf, d.stretch_linf);
-    area_sum += area;
-    angle_sum += d.angle_mean * area;
-    areadist_sum += d.area_mean * area;
-    l2_sum += d.stretch_l2 * d.stretch_l2 * area;
+    total = diffuv::combined(total, d);
     patch_ms += r.milliseconds;
-  }
-  if(area_sum > 0) {
-    total.angle_mean = angle_sum / area_sum;
-    total.area_mean = areadist_sum / area_sum;
-    total.stretch_l2 = std::sqrt(l2_sum / area_sum);
   }
   print_row("total", "", vertex_entries, total.faces, "", total_ms, moved, forced, total);
   if(failed > 0)
@@ -404,8 +386,7 @@ void add_common_options(CLI::App* cmd, Param_options& o)
                   "Default: automatic (the sharpest boundary vertex, then equal arc lengths)");
   add_patch_options(cmd, o.patches);
   cmd->add_option("-o,--output", o.output, "Output folder (created if needed)")
-      ->check(CLI::Validator([](const std::string& s) { return s.empty() ? "the output folder name is empty" : ""; },
-                             "DIR"))
+      ->check(output_folder_check())
       ->capture_default_str();
   cmd->add_option("--distance", o.distance,
                   "Distance diffused from each side: fmm (fast marching through triangles), graph (edge paths, the "

@@ -60,8 +60,7 @@ void add_segment_command(CLI::App& app)
   cmd->add_option("mesh", options->mesh, "Triangle mesh (OFF, OBJ, PLY, STL). Default: CGAL's cow.off");
   add_patch_options(cmd, options->patches);
   cmd->add_option("-o,--output", options->output, "Output folder (created if needed)")
-      ->check(CLI::Validator([](const std::string& s) { return s.empty() ? "the output folder name is empty" : ""; },
-                             "DIR"))
+      ->check(output_folder_check())
       ->capture_default_str();
   cmd->footer("Writes OUTPUT/<mesh>.patches.txt (the patch of each face of the mesh file, one per line: a label file for --labels) "
               "and OUTPUT/<mesh>.patches.ply (a colour per patch, for MeshLab or Blender; repaint it and pass it "

@@ -29,6 +29,8 @@
 #ifndef DIFFUV_COMPARE_CGAL_PARAMETERIZERS_H
 #define DIFFUV_COMPARE_CGAL_PARAMETERIZERS_H
 
+#include <diffuv/patches/disc_topology.h>
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 
@@ -133,55 +135,14 @@ inline double milliseconds_since(std::chrono::steady_clock::time_point start)
 }
 
 /// The border halfedges of `sm` in `next()` order (clockwise around the patch)
-/// if `sm` is a topological disc: connected through edges, one boundary loop,
-/// no vertex on the boundary twice (a pinch), and V - E + F = 1 (no handle).
-/// Empty otherwise. CGAL's fixed-border parameterizers do not check this
-/// (holes would be treated as interior vertices), so it is done here, in
-/// O(patch).
+/// if `sm` is a topological disc (`check_disc()`), empty otherwise. CGAL's
+/// fixed-border parameterizers do not check this (holes would be treated as
+/// interior vertices), so it is done here.
 inline std::vector<Cgal_patch_mesh::Halfedge_index> disc_border(const Cgal_patch_mesh& sm)
 {
-  using H = Cgal_patch_mesh::Halfedge_index;
-  using F = Cgal_patch_mesh::Face_index;
-  std::vector<H> loop;
-
-  // Connected through edges.
-  std::vector<char> seen(sm.number_of_faces(), 0);
-  std::vector<F> stack = {*sm.faces().begin()};
-  seen[std::size_t(stack.back())] = 1;
-  std::size_t reached = 1;
-  while(!stack.empty()) {
-    const F f = stack.back();
-    stack.pop_back();
-    for(H h : CGAL::halfedges_around_face(sm.halfedge(f), sm)) {
-      const F g = sm.face(sm.opposite(h));
-      if(g != Cgal_patch_mesh::null_face() && !seen[std::size_t(g)]) {
-        seen[std::size_t(g)] = 1;
-        ++reached;
-        stack.push_back(g);
-      }
-    }
-  }
-  if(reached != sm.number_of_faces()) return {};
-
-  // One boundary loop without a pinch: every border halfedge is on the loop
-  // of the first one, and no vertex starts two border halfedges.
-  std::size_t border_halfedges = 0;
-  H first;
-  std::vector<char> starts_border(sm.number_of_vertices(), 0);
-  for(H h : sm.halfedges()) {
-    if(!sm.is_border(h)) continue;
-    ++border_halfedges;
-    first = h;
-    char& s = starts_border[std::size_t(sm.source(h))];
-    if(s) return {};
-    s = 1;
-  }
-  if(border_halfedges == 0) return {};
-  for(H h : CGAL::halfedges_around_face(first, sm)) loop.push_back(h);
-  if(loop.size() != border_halfedges) return {};
-
-  const long euler = long(sm.number_of_vertices()) - long(sm.number_of_edges()) + long(sm.number_of_faces());
-  if(euler != 1) return {};
+  std::vector<Cgal_patch_mesh::Halfedge_index> loop;
+  if(!check_disc(sm)) return loop;
+  for(auto h : CGAL::halfedges_around_face(boundary_loops(sm).front(), sm)) loop.push_back(h);
   return loop;
 }
 

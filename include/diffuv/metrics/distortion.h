@@ -63,6 +63,7 @@ struct Distortion_summary {
   double area_max = 0;                ///< largest area distortion
   double stretch_l2 = 0;              ///< Sander's global L2 stretch sqrt(sum L2_t^2 A3d_t / sum A3d_t), >= 1, 1 = isometry up to scale
   double stretch_linf = 0;            ///< largest L-infinity stretch of a face
+  double measured_area = 0;           ///< 3D area of the non-degenerate faces: the weight of the means
 
   /// Whether the chart is one-to-one: no flipped, degenerate or overlapping face.
   bool injective() const { return flipped == 0 && degenerate == 0 && overlapping_pairs == 0; }
@@ -350,6 +351,7 @@ Distortion_summary measure_distortion(const TriangleMesh& tm, const FaceRange& f
     s.area_max = std::max(s.area_max, td.area);
     s.stretch_linf = std::max(s.stretch_linf, td.stretch_linf);
   }
+  s.measured_area = weight;
   if(weight > 0) {
     s.angle_mean = angle_sum / weight;
     s.area_mean = area_sum / weight;
@@ -360,6 +362,31 @@ Distortion_summary measure_distortion(const TriangleMesh& tm, const FaceRange& f
   triangles.reserve(data.size());
   for(const Face_data& fd : data) triangles.push_back(fd.uv);
   s.overlapping_pairs = internal::count_overlaps(std::move(triangles), usable);
+  return s;
+}
+
+/// The summary of two sets of charts together (e.g. the patches of a mesh,
+/// one at a time): counts add up, maxima are maxima, means and the L2 stretch
+/// are weighted by each side's `measured_area`, as within one chart. Each
+/// chart keeps its own normalisation (area, stretch) and overlaps are counted
+/// within charts only, since every chart has its own square.
+inline Distortion_summary combined(const Distortion_summary& a, const Distortion_summary& b)
+{
+  Distortion_summary s;
+  s.faces = a.faces + b.faces;
+  s.flipped = a.flipped + b.flipped;
+  s.degenerate = a.degenerate + b.degenerate;
+  s.overlapping_pairs = a.overlapping_pairs + b.overlapping_pairs;
+  s.angle_max = std::max(a.angle_max, b.angle_max);
+  s.area_max = std::max(a.area_max, b.area_max);
+  s.stretch_linf = std::max(a.stretch_linf, b.stretch_linf);
+  s.measured_area = a.measured_area + b.measured_area;
+  if(s.measured_area > 0) {
+    const double wa = a.measured_area / s.measured_area, wb = b.measured_area / s.measured_area;
+    s.angle_mean = wa * a.angle_mean + wb * b.angle_mean;
+    s.area_mean = wa * a.area_mean + wb * b.area_mean;
+    s.stretch_l2 = std::sqrt(wa * a.stretch_l2 * a.stretch_l2 + wb * b.stretch_l2 * b.stretch_l2);
+  }
   return s;
 }
 
