@@ -3,7 +3,8 @@
 // The folders follow the pipeline:
 //   graph/             multi-source Dijkstra, heap tags, edge lengths
 //   patches/           disc check, boundary loop, four sides and corners
-//   parameterization/  diffusion coordinates (u, v) of a patch; a whole disc mesh
+//   parameterization/  diffusion coordinates (u, v) of a patch, fold repair; a whole disc mesh
+//   cgal/              Diffusion_parameterizer_3, a CGAL Parameterizer_3 model
 //   atlas/             the uv-map: (chart, vertex) -> uv array, kd-tree, point location
 //   metrics/           distortion measures of a chart
 //   io/                mesh reader, selection files, OBJ and CSV writers
@@ -23,6 +24,8 @@
 #include <diffuv/parameterization/diffusion_coordinates.h>
 #include <diffuv/parameterization/parameterize_disc.h>
 #include <diffuv/parameterization/parameterize_patches.h>
+#include <diffuv/parameterization/repair_folds.h>
+#include <diffuv/cgal/Diffusion_parameterizer_3.h>
 #include <diffuv/atlas/Uv_atlas.h>
 #include <diffuv/metrics/distortion.h>
 #include <diffuv/io/atomic_file.h>

@@ -1,0 +1,51 @@
+// diffuv's parameterizer through CGAL's own entry point on a Surface_mesh:
+// CGAL::Surface_mesh_parameterization::parameterize() with a
+// diffuv::Diffusion_parameterizer_3 and automatic corners, the uv in a
+// Surface_mesh property map, then the distortion measured.
+//
+// Usage: cgal_surface_mesh [disc-mesh.off]     Default: CGAL's mushroom.off.
+#include <diffuv/cgal/Diffusion_parameterizer_3.h>
+#include <diffuv/metrics/distortion.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/Surface_mesh_parameterization/parameterize.h>
+
+#include <cstdlib>
+#include <iostream>
+#include <string>
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Mesh = CGAL::Surface_mesh<Kernel::Point_3>;
+namespace SMP = CGAL::Surface_mesh_parameterization;
+
+int main(int argc, char** argv)
+{
+  const std::string file = argc > 1 ? argv[1] : std::string(DIFFUV_DEFAULT_DATA_DIR) + "/meshes/mushroom.off";
+  Mesh mesh;
+  if(!CGAL::IO::read_polygon_mesh(file, mesh) || is_empty(mesh)) {
+    std::cerr << "Error: cannot read " << file << std::endl;
+    return EXIT_FAILURE;
+  }
+  // CGAL's convention: the longest border cycle gives the border halfedge (null on a closed mesh).
+  const auto bhd = CGAL::Polygon_mesh_processing::longest_border(mesh).first;
+  if(bhd == boost::graph_traits<Mesh>::null_halfedge()) {
+    std::cerr << "Error: " << file << " has no border; cut it open first (see seam_mesh.cpp)" << std::endl;
+    return EXIT_FAILURE;
+  }
+
+  auto uv = mesh.add_property_map<Mesh::Vertex_index, Kernel::Point_2>("v:uv").first;
+  diffuv::Diffusion_parameterizer_3<Mesh> parameterizer; // corners chosen automatically
+  const SMP::Error_code err = SMP::parameterize(mesh, parameterizer, bhd, uv);
+  if(err != SMP::OK) {
+    std::cerr << "Error: " << diffuv::cgal_error_message(err) << std::endl;
+    return EXIT_FAILURE;
+  }
+
+  const diffuv::Distortion_summary d = diffuv::measure_distortion(mesh, faces(mesh), mesh.points(), uv);
+  std::cout << file << ": " << num_vertices(mesh) << " vertices mapped onto the unit square\n"
+            << "flipped " << d.flipped << ", overlapping pairs " << d.overlapping_pairs << ", angle distortion mean "
+            << d.angle_mean << " (1 = conformal), area distortion mean " << d.area_mean << std::endl;
+  return d.injective() ? EXIT_SUCCESS : EXIT_FAILURE;
+}
