@@ -431,6 +431,15 @@ TEST(CgalCompare, EmptyAndNonTriangularPatches)
   expect_error_everywhere(quads, all_faces(quads), {v[0], v[2], v[5], v[3]}, SMP::ERROR_NON_TRIANGULAR_MESH);
 }
 
+// A patch whose points all coincide: CGAL's LSCM would crash on it; every
+// method reports that no system can be solved.
+TEST(CgalCompare, CoincidentPointsAreAnErrorNotACrash)
+{
+  Mesh grid = make_grid(3, 3);
+  for(Vertex v : vertices(grid)) grid.point(v) = Point_3(1, 1, 1);
+  expect_error_everywhere(grid, all_faces(grid), grid_corners(3, 0, 3, 0, 3), SMP::ERROR_CANNOT_SOLVE_LINEAR_SYSTEM);
+}
+
 // Bad corners are reported for the methods that use them, and ignored by LSCM and ARAP.
 TEST(CgalCompare, BadCornersAreWrongParameters)
 {

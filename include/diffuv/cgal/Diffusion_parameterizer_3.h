@@ -214,7 +214,10 @@ public:
   ///        parameterize; a non-border halfedge selects the component of its
   ///        face, which is then reported as not a disc if it has no border;
   ///        a null halfedge (what `longest_border()` returns for a closed mesh)
-  ///        gives `ERROR_NO_TOPOLOGICAL_DISC`
+  ///        gives `ERROR_NO_TOPOLOGICAL_DISC`. Through CGAL's free function
+  ///        `parameterize()` check for a null `bhd` first: CGAL 5.5 indexes the
+  ///        component of `bhd` before calling this and crashes on a null one
+  ///        (a precondition that Release builds do not check).
   /// \returns `OK`, or the error closest to the problem found (`to_cgal_error_code()`)
   template <class VertexUVMap, class VertexIndexMap, class VertexParameterizedMap>
   CGAL::Surface_mesh_parameterization::Error_code parameterize(const TriangleMesh& mesh, halfedge_descriptor bhd,
@@ -311,19 +314,34 @@ private:
 
   // parameterize_disc() with its own defaults for what is CGAL::Default here,
   // so that this class follows the library's default distance (and heap).
+  // A map that still folds after the repair (numerically degenerate input
+  // only) is `not_injective`, which CGAL callers see as ERROR_NO_1_TO_1_MAPPING.
   static Status run_parameterize_disc(const Work_mesh& work, const std::vector<work_vertex>& corners,
                                       Uv_atlas<Work_mesh>& atlas, Four_sides<work_vertex>& sides)
+  {
+    Repair_report repair;
+    Status status = run_parameterize_disc(work, corners, atlas, sides, repair);
+    if(status && repair.remaining_folded_faces > 0)
+      status = Status(Status_code::not_injective, std::to_string(repair.remaining_folded_faces) + " folded faces");
+    return status;
+  }
+
+  static Status run_parameterize_disc(const Work_mesh& work, const std::vector<work_vertex>& corners,
+                                      Uv_atlas<Work_mesh>& atlas, Four_sides<work_vertex>& sides,
+                                      Repair_report& repair)
   {
     constexpr bool default_distance = std::is_same<DistanceTag, CGAL::Default>::value;
     constexpr bool default_heap = std::is_same<HeapTag, CGAL::Default>::value;
     if constexpr(default_distance && default_heap) {
-      return parameterize_disc(work, corners, atlas, &sides);
+      return parameterize_disc(work, corners, atlas, &sides, Fibonacci_heap_tag(), Default_distance_tag(),
+                               Repair_options(), &repair);
     } else if constexpr(default_distance) {
-      return parameterize_disc<Work_mesh, HeapTag>(work, corners, atlas, &sides); // the default distance
+      return parameterize_disc(work, corners, atlas, &sides, HeapTag(), Default_distance_tag(), Repair_options(),
+                               &repair);
     } else {
       // The heap tag comes first: name parameterize_disc()'s default heap.
       typedef typename CGAL::Default::Get<HeapTag, Fibonacci_heap_tag>::type Heap;
-      return parameterize_disc(work, corners, atlas, &sides, Heap(), DistanceTag());
+      return parameterize_disc(work, corners, atlas, &sides, Heap(), DistanceTag(), Repair_options(), &repair);
     }
   }
 

@@ -32,6 +32,7 @@
 #include <diffuv/patches/disc_topology.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Bbox_3.h>
 #include <CGAL/Surface_mesh.h>
 
 #if !defined(CGAL_EIGEN3_ENABLED)
@@ -247,6 +248,11 @@ cgal_parameterize_patch(const TriangleMesh& tm, const FaceRange& faces, VertexPo
       return fail(SMP::ERROR_NO_TOPOLOGICAL_DISC);
   }
   if(sm.number_of_faces() == 0) return fail(SMP::ERROR_EMPTY_MESH);
+  // All points in one place: CGAL 5.5's LSCM (its two pinned vertices) crashes
+  // on it, and no method can map it; no linear system has a solution.
+  const CGAL::Bbox_3 box = CGAL::bbox_3(sm.points().begin(), sm.points().end());
+  if(!(box.xmax() > box.xmin()) && !(box.ymax() > box.ymin()) && !(box.zmax() > box.zmin()))
+    return fail(SMP::ERROR_CANNOT_SOLVE_LINEAR_SYSTEM);
 
   const std::vector<Sm_halfedge> border = internal::disc_border(sm); // clockwise
   if(border.empty()) return fail(SMP::ERROR_NO_TOPOLOGICAL_DISC);

@@ -165,15 +165,25 @@ Status repair_folds(const TriangleMesh& tm, VertexPointMap vpm,
       count += bad_face[f];
     }
     for(std::size_t i = 0; i < n; ++i) {
+      // Interior vertex: the winding number of its link around it, counted
+      // as signed crossings of the ray from the vertex along +u (no
+      // trigonometry; the link's edges are the faces' far edges). Border
+      // vertex: the total angle of its open fan, which must stay below 2 pi.
       double turn = 0;
+      int winding = 0;
       for(std::size_t f : faces_of[i]) {
         const auto& t = p.triangle[f];
         const int k = t[0] == i ? 0 : (t[1] == i ? 1 : 2);
         const std::size_t a = t[(k + 1) % 3], b = t[(k + 2) % 3];
         const double ax = u[a] - u[i], ay = v[a] - v[i], bx = u[b] - u[i], by = v[b] - v[i];
-        turn += std::atan2(ax * by - ay * bx, ax * bx + ay * by);
+        if(p.side_mask[i]) {
+          turn += std::atan2(ax * by - ay * bx, ax * bx + ay * by);
+        } else if((ay < 0) != (by < 0)) {
+          const double x = ax + ay / (ay - by) * (bx - ax);  // where edge ab meets v = v_i
+          if(x > 0) winding += ay < 0 ? 1 : -1;
+        }
       }
-      bad_vertex[i] = p.side_mask[i] ? !(turn < 2 * CGAL_PI - 1e-6) : !(std::abs(turn - 2 * CGAL_PI) < 1e-6);
+      bad_vertex[i] = p.side_mask[i] ? !(turn < 2 * CGAL_PI - 1e-6) : winding != 1;
       if(bad_vertex[i])
         for(std::size_t f : faces_of[i]) count += !bad_face[f];
     }
