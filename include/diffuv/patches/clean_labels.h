@@ -1,0 +1,575 @@
+// diffuv: region labels cleaned before two meshes are put in correspondence.
+//
+// Labels painted or transferred onto two meshes of one object disagree at the
+// region borders: jagged borders, one-face islands, a region touching itself
+// at a vertex. Points of the two meshes are matched through (label, u, v), so
+// both meshes must get the same regions wherever their labels agree. The
+// cleaning is therefore a fixed rule that reads only the labels and the
+// surface (areas, edge lengths, adjacency, orientation), never the face or
+// vertex numbering nor the coordinate axes.
+//
+// The rule. A round applies, in this order:
+//
+//  1. Islands. The components (faces joined across edges) of equal labels; a
+//     component whose area is below `island_fraction` times the area of the
+//     largest component of its label (measured at the start of the round) is
+//     an island. Islands are absorbed smallest first: an island takes the
+//     label with which it shares the longest border (3D edge length, summed
+//     over the neighbouring components of that label; ties: smaller label)
+//     and becomes part of those components. A component that grew this way
+//     is absorbed in its turn if it is still an island, so an island inside
+//     an island ends in the region around both. Islands of equal area and
+//     label are decided together from the same state (they are never
+//     adjacent), so no order between them is needed. A label with several
+//     large components (two hands painted with one label) keeps them all.
+//  2. Border smoothing, in synchronous passes (every face decides from the
+//     labels of the previous pass, so the face order does not matter): a face
+//     with two or more edge-neighbours of one other label L takes L (the
+//     label with most such neighbours; ties: smaller label). Mesh-border edges
+//     are not neighbours. Two neighbouring faces that would move differently
+//     (typically swapping labels) do not both move: the one with more of its
+//     new label than of its own around its corners (by area) goes, then the
+//     one whose move shortens the region borders most, then the one moving to
+//     the smaller label, then from the smaller label; the other waits for the
+//     next pass. Each pass then strictly shortens the total border length, so
+//     passes never oscillate. Passes stop after `smoothing_passes` or when one
+//     changes nothing.
+//  3. Pinches. Around a vertex, the faces of one label may form several fans
+//     (separated by faces of other labels or by the mesh border): the region
+//     touches itself there, and its boundary passes the vertex twice. The fan
+//     of largest area is kept; every face of the other fans of that label
+//     takes the label most common among its edge-neighbours of another label
+//     (or, if it has none, among the faces sharing a vertex with it; ties:
+//     smaller label), read from the labels before this step. When two fans
+//     tie for the largest area nothing tells them apart, so none is kept and
+//     the region leaves the vertex on both sides. When several labels are
+//     pinched at one vertex (a saddle: L, M, L, M around it), the label whose
+//     fans to remove have the least area (then the smaller label) is cut
+//     first; this reconnects the other label, which then needs no cut. (Fans
+//     kept apart by a single triangle are usually joined by smoothing first:
+//     that triangle has two edges towards the region.)
+//
+// Rounds repeat until one changes nothing, at most `max_rounds` times. Areas
+// and lengths are rounded to integer multiples of 2^-32 times the largest face
+// area and the longest edge: integer sums do not depend on the order in which
+// faces are visited, so ties are ties on every numbering of the mesh.
+//
+// Cost per round: O(F log F) for the islands (components merged small into
+// large; an island is scanned again only when it grew and is still an
+// island), O(F) per smoothing pass, O(sum of vertex degrees) for the pinches.
+#ifndef DIFFUV_PATCHES_CLEAN_LABELS_H
+#define DIFFUV_PATCHES_CLEAN_LABELS_H
+
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/number_utils.h>
+#include <CGAL/squared_distance_3.h>
+
+#include <boost/graph/graph_traits.hpp>
+#include <boost/property_map/property_map.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <map>
+#include <numeric>
+#include <queue>
+#include <stdexcept>
+#include <tuple>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace diffuv {
+
+/// Options of `clean_labels()`.
+struct Label_cleaning_options {
+  double island_fraction = 0.1;     ///< a component of a label whose area is below this fraction of the label's largest component is an island (in [0, 1])
+  std::size_t smoothing_passes = 4; ///< synchronous border-smoothing passes per round
+  std::size_t max_rounds = 10;      ///< the three rules are repeated until nothing changes, at most this many times
+};
+
+/// What `clean_labels()` did.
+struct Label_cleaning_report {
+  std::size_t islands = 0;        ///< islands absorbed (a component absorbed twice, as an island inside an island, counts twice)
+  std::size_t island_faces = 0;   ///< faces relabelled by the island rule (relabellings, summed over islands)
+  std::size_t smoothed_faces = 0; ///< faces relabelled by border smoothing (relabellings, summed over passes)
+  std::size_t pinches = 0;        ///< (vertex, label) pairs where a region touched itself and was cut
+  std::size_t pinch_faces = 0;    ///< faces relabelled by the pinch rule (summed over rounds)
+  std::size_t rounds = 0;         ///< rounds run, the last one included (1 when the labels were clean)
+  std::size_t changed = 0;        ///< faces whose final label differs from their input label
+
+  /// Returns how many faces end with another label than they came with (faces, not events).
+  std::size_t changed_faces() const { return changed; }
+
+  /// Returns true if no rule fired and no face changed.
+  bool empty() const { return changed == 0 && islands == 0 && smoothed_faces == 0 && pinches == 0; }
+};
+
+namespace internal {
+
+/// The surface as the cleaning rules read it: faces and vertices as indices,
+/// areas and lengths as integers.
+struct Label_cleaning_mesh {
+  static constexpr std::size_t none = (std::numeric_limits<std::size_t>::max)();
+
+  std::vector<std::size_t> adjacent_begin;    ///< #F+1 entries: face f's neighbours are [begin[f], begin[f+1])
+  std::vector<std::size_t> adjacent_face;     ///< the face across each edge of f that is not on the mesh border
+  std::vector<std::int64_t> adjacent_length;  ///< the (rounded) 3D length of that edge
+  std::vector<std::int64_t> area;             ///< #F entries: (rounded) face areas
+  std::vector<std::size_t> ring_begin;        ///< #V+1 entries: vertex v's faces are [begin[v], begin[v+1])
+  std::vector<std::size_t> ring_face;         ///< faces around each vertex in rotation order; `none` for a border gap
+  std::vector<std::size_t> corner_begin;      ///< #F+1 entries: face f's vertices are [begin[f], begin[f+1])
+  std::vector<std::size_t> corner_vertex;     ///< vertex indices of the faces
+
+  std::size_t number_of_faces() const { return area.size(); }
+};
+
+/// Rounds `x` to a multiple of 2^-32 `scale` (integers add up the same in any order).
+inline std::int64_t rounded_measure(double x, double scale)
+{
+  if(!(scale > 0.) || !(x > 0.)) return 0;
+  return static_cast<std::int64_t>(std::llround(x / scale * 4294967296.));
+}
+
+/// Reads `tm` once: adjacency across edges, faces around vertices, rounded
+/// areas and edge lengths, all indexed by the mesh's face and vertex indices.
+template <class TriangleMesh, class VertexPointMap>
+Label_cleaning_mesh make_label_cleaning_mesh(const TriangleMesh& tm, VertexPointMap vpm)
+{
+  using Graph_traits = boost::graph_traits<TriangleMesh>;
+  using face_descriptor = typename Graph_traits::face_descriptor;
+  using vertex_descriptor = typename Graph_traits::vertex_descriptor;
+  const auto findex = get(boost::face_index, tm);
+  const auto vindex = get(boost::vertex_index, tm);
+  const std::size_t nf = num_faces(tm), nv = num_vertices(tm);
+  std::vector<face_descriptor> face_of(nf);
+  for(face_descriptor f : faces(tm)) face_of[get(findex, f)] = f;
+  std::vector<vertex_descriptor> vertex_of(nv);
+  for(vertex_descriptor v : vertices(tm)) vertex_of[get(vindex, v)] = v;
+
+  Label_cleaning_mesh m;
+  std::vector<double> area(nf), length;
+  double largest_area = 0., longest_edge = 0.;
+  m.adjacent_begin.push_back(0);
+  m.corner_begin.push_back(0);
+  for(std::size_t i = 0; i < nf; ++i) {
+    area[i] = CGAL::to_double(CGAL::Polygon_mesh_processing::face_area(face_of[i], tm, CGAL::parameters::vertex_point_map(vpm)));
+    largest_area = (std::max)(largest_area, area[i]);
+    for(auto h : CGAL::halfedges_around_face(halfedge(face_of[i], tm), tm)) {
+      m.corner_vertex.push_back(get(vindex, target(h, tm)));
+      const auto g = face(opposite(h, tm), tm);
+      if(g == Graph_traits::null_face()) continue;
+      const double l = std::sqrt(CGAL::to_double(CGAL::squared_distance(get(vpm, source(h, tm)), get(vpm, target(h, tm)))));
+      longest_edge = (std::max)(longest_edge, l);
+      m.adjacent_face.push_back(get(findex, g));
+      length.push_back(l);
+    }
+    m.adjacent_begin.push_back(m.adjacent_face.size());
+    m.corner_begin.push_back(m.corner_vertex.size());
+  }
+  // The largest face and the longest edge do not depend on the numbering: safe scales.
+  for(std::size_t i = 0; i < nf; ++i) m.area.push_back(rounded_measure(area[i], largest_area));
+  for(double l : length) m.adjacent_length.push_back(rounded_measure(l, longest_edge));
+
+  m.ring_begin.push_back(0);
+  for(std::size_t i = 0; i < nv; ++i) {
+    const auto h = halfedge(vertex_of[i], tm);
+    if(h != Graph_traits::null_halfedge())
+      for(auto g : CGAL::halfedges_around_target(h, tm)) {
+        const auto f = face(g, tm);
+        m.ring_face.push_back(f == Graph_traits::null_face() ? Label_cleaning_mesh::none
+                                                              : static_cast<std::size_t>(get(findex, f)));
+      }
+    m.ring_begin.push_back(m.ring_face.size());
+  }
+  return m;
+}
+
+/// The label of `counts` (label -> count) with the largest count, ties to the
+/// smaller label (a std::map iterates labels in increasing order); `fallback` if empty.
+template <class Count>
+int most_common_label(const std::map<int, Count>& counts, int fallback)
+{
+  int best = fallback;
+  Count most = 0;
+  bool found = false;
+  for(const auto& [label, n] : counts)
+    if(!found || n > most) {
+      best = label;
+      most = n;
+      found = true;
+    }
+  return best;
+}
+
+/// Rule 1: absorbs islands, smallest first. Returns how many were absorbed.
+inline std::size_t absorb_islands(const Label_cleaning_mesh& m, std::vector<int>& labels, double fraction,
+                                  std::size_t& island_faces)
+{
+  constexpr std::size_t none = Label_cleaning_mesh::none;
+  const std::size_t nf = m.number_of_faces();
+
+  // Components of equal labels, by breadth-first search across edges.
+  std::vector<std::size_t> component(nf, none);
+  std::vector<std::vector<std::size_t>> members;
+  std::vector<std::int64_t> area;
+  std::vector<int> label_of;
+  for(std::size_t start = 0; start < nf; ++start) {
+    if(component[start] != none) continue;
+    const std::size_t c = members.size();
+    members.push_back({start});
+    label_of.push_back(labels[start]);
+    area.push_back(0);
+    component[start] = c;
+    for(std::size_t q = 0; q < members[c].size(); ++q) {
+      const std::size_t f = members[c][q];
+      area[c] += m.area[f];
+      for(std::size_t k = m.adjacent_begin[f]; k < m.adjacent_begin[f + 1]; ++k) {
+        const std::size_t g = m.adjacent_face[k];
+        if(component[g] == none && labels[g] == label_of[c]) {
+          component[g] = c;
+          members[c].push_back(g);
+        }
+      }
+    }
+  }
+  const std::size_t nc = members.size();
+
+  // Thresholds are fixed for the round: a component does not become an island
+  // because another component of its label grew.
+  std::map<int, std::int64_t> largest;
+  for(std::size_t c = 0; c < nc; ++c) largest[label_of[c]] = (std::max)(largest[label_of[c]], area[c]);
+  auto is_small = [&](int label, std::int64_t a) {
+    const auto it = largest.find(label);
+    return it != largest.end() && static_cast<double>(a) < fraction * static_cast<double>(it->second);
+  };
+
+  std::vector<std::size_t> parent(nc);
+  std::iota(parent.begin(), parent.end(), std::size_t(0));
+  auto find = [&](std::size_t c) {
+    while(parent[c] != c) c = parent[c] = parent[parent[c]];
+    return c;
+  };
+  auto unite = [&](std::size_t a, std::size_t b) { // the smaller face list moves into the larger
+    a = find(a);
+    b = find(b);
+    if(a == b) return a;
+    if(members[a].size() < members[b].size()) std::swap(a, b);
+    parent[b] = a;
+    members[a].insert(members[a].end(), members[b].begin(), members[b].end());
+    std::vector<std::size_t>().swap(members[b]);
+    area[a] += area[b];
+    return a;
+  };
+
+  using Entry = std::tuple<std::int64_t, int, std::size_t>; // area, label, component
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> heap;
+  std::vector<char> candidate(nc, 0);
+  for(std::size_t c = 0; c < nc; ++c)
+    if(is_small(label_of[c], area[c])) {
+      candidate[c] = 1;
+      heap.emplace(area[c], label_of[c], c);
+    }
+
+  std::size_t absorbed = 0;
+  std::map<int, std::int64_t> border;
+  std::vector<std::size_t> batch, join;
+  std::vector<std::pair<std::size_t, int>> moves;
+  while(!heap.empty()) {
+    const std::int64_t a = std::get<0>(heap.top());
+    const int label = std::get<1>(heap.top());
+    batch.clear();
+    while(!heap.empty() && std::get<0>(heap.top()) == a && std::get<1>(heap.top()) == label) {
+      const std::size_t c = std::get<2>(heap.top());
+      heap.pop();
+      if(find(c) == c && candidate[c] && area[c] == a && label_of[c] == label) batch.push_back(c);
+    }
+    std::sort(batch.begin(), batch.end());
+    batch.erase(std::unique(batch.begin(), batch.end()), batch.end());
+
+    // Decide all islands of the batch from the same state: equal islands of
+    // one label are never adjacent, so they do not change each other's border.
+    moves.clear();
+    for(std::size_t c : batch) {
+      border.clear();
+      for(std::size_t f : members[c])
+        for(std::size_t k = m.adjacent_begin[f]; k < m.adjacent_begin[f + 1]; ++k) {
+          const std::size_t d = find(component[m.adjacent_face[k]]);
+          if(d != c) border[label_of[d]] += m.adjacent_length[k];
+        }
+      if(border.empty()) { // a whole connected part of the mesh: nothing to join
+        candidate[c] = 0;
+        continue;
+      }
+      moves.emplace_back(c, most_common_label(border, label));
+    }
+
+    for(const auto& [c, target] : moves) {
+      ++absorbed;
+      island_faces += members[c].size();
+      for(std::size_t f : members[c]) labels[f] = target;
+      // Join every neighbouring component of the new label: one label's
+      // connected faces must stay one component.
+      join.clear();
+      for(std::size_t f : members[c])
+        for(std::size_t k = m.adjacent_begin[f]; k < m.adjacent_begin[f + 1]; ++k) {
+          const std::size_t d = find(component[m.adjacent_face[k]]);
+          if(d != c && label_of[d] == target) join.push_back(d);
+        }
+      std::sort(join.begin(), join.end());
+      join.erase(std::unique(join.begin(), join.end()), join.end());
+      bool all_islands = true; // the result is an island only if what it joined were islands
+      for(std::size_t d : join) all_islands = all_islands && candidate[d];
+      std::size_t root = c;
+      for(std::size_t d : join) root = unite(root, d);
+      label_of[root] = target;
+      candidate[root] = all_islands && is_small(target, area[root]);
+      if(candidate[root]) heap.emplace(area[root], target, root);
+    }
+  }
+  return absorbed;
+}
+
+/// Rule 2: synchronous border smoothing. Returns the number of relabellings.
+inline std::size_t smooth_borders_synchronously(const Label_cleaning_mesh& m, std::vector<int>& labels,
+                                                std::size_t passes)
+{
+  const std::size_t nf = m.number_of_faces();
+  std::vector<int> proposal(nf);
+  std::vector<std::int64_t> gain(nf), support(nf);
+  std::vector<char> moves(nf);
+  std::vector<std::size_t> accepted;
+  std::map<int, int> count;
+  std::size_t changed = 0;
+  for(std::size_t pass = 0; pass < passes; ++pass) {
+    bool any = false;
+    for(std::size_t f = 0; f < nf; ++f) {
+      moves[f] = 0;
+      const int own = labels[f];
+      count.clear();
+      for(std::size_t k = m.adjacent_begin[f]; k < m.adjacent_begin[f + 1]; ++k)
+        if(labels[m.adjacent_face[k]] != own) ++count[labels[m.adjacent_face[k]]];
+      const int target = most_common_label(count, own);
+      if(target == own || count[target] < 2) continue;
+      // How much shorter the borders get: edges towards `target` become
+      // interior, edges towards `own` become border.
+      std::int64_t g = 0;
+      for(std::size_t k = m.adjacent_begin[f]; k < m.adjacent_begin[f + 1]; ++k) {
+        const int l = labels[m.adjacent_face[k]];
+        if(l == target) g += m.adjacent_length[k];
+        else if(l == own) g -= m.adjacent_length[k];
+      }
+      if(g <= 0) continue; // only a degenerate face: it would not shorten anything
+      // Support: how much more of `target` than of `own` lies around its
+      // corners (by area; edge-neighbours sit at two corners).
+      std::int64_t around = 0;
+      for(std::size_t c = m.corner_begin[f]; c < m.corner_begin[f + 1]; ++c)
+        for(std::size_t r = m.ring_begin[m.corner_vertex[c]]; r < m.ring_begin[m.corner_vertex[c] + 1]; ++r) {
+          const std::size_t h = m.ring_face[r];
+          if(h == Label_cleaning_mesh::none || h == f) continue;
+          if(labels[h] == target) around += m.area[h];
+          else if(labels[h] == own) around -= m.area[h];
+        }
+      proposal[f] = target;
+      support[f] = around;
+      gain[f] = g;
+      moves[f] = 1;
+      any = true;
+    }
+    if(!any) break;
+
+    // Neighbours moving differently: only the first by (support, gain, new
+    // label, old label) moves. Then the labels around every move are those it
+    // was computed from, except neighbours making the same move, and the
+    // borders get shorter by at least its gain: passes cannot cycle.
+    auto goes_first = [&](std::size_t f, std::size_t g) {
+      if(support[f] != support[g]) return support[f] > support[g];
+      if(gain[f] != gain[g]) return gain[f] > gain[g];
+      if(proposal[f] != proposal[g]) return proposal[f] < proposal[g];
+      return labels[f] < labels[g];
+    };
+    accepted.clear();
+    for(std::size_t f = 0; f < nf; ++f) {
+      if(!moves[f]) continue;
+      bool go = true;
+      for(std::size_t k = m.adjacent_begin[f]; k < m.adjacent_begin[f + 1] && go; ++k) {
+        const std::size_t g = m.adjacent_face[k];
+        if(moves[g] && (proposal[g] != proposal[f] || labels[g] != labels[f]) && !goes_first(f, g)) go = false;
+      }
+      if(go) accepted.push_back(f);
+    }
+    for(std::size_t f : accepted) labels[f] = proposal[f];
+    changed += accepted.size();
+  }
+  return changed;
+}
+
+/// Rule 3: cuts the regions that touch themselves at a vertex. Returns the
+/// number of (vertex, label) pairs cut; adds the faces relabelled to `pinch_faces`.
+inline std::size_t cut_pinches(const Label_cleaning_mesh& m, std::vector<int>& labels, std::size_t& pinch_faces)
+{
+  constexpr std::size_t none = Label_cleaning_mesh::none;
+  const std::size_t nf = m.number_of_faces();
+  const std::size_t nv = m.ring_begin.size() - 1;
+  const std::vector<int> before = labels;
+
+  // The label a face of a removed fan takes, from the labels before this step:
+  // a property of the face alone, so faces cut at two vertices agree.
+  std::map<int, int> count;
+  auto new_label = [&](std::size_t f) {
+    const int own = before[f];
+    count.clear();
+    for(std::size_t k = m.adjacent_begin[f]; k < m.adjacent_begin[f + 1]; ++k)
+      if(before[m.adjacent_face[k]] != own) ++count[before[m.adjacent_face[k]]];
+    if(count.empty()) // no other label across its edges: look around its vertices
+      for(std::size_t c = m.corner_begin[f]; c < m.corner_begin[f + 1]; ++c) {
+        const std::size_t v = m.corner_vertex[c];
+        for(std::size_t r = m.ring_begin[v]; r < m.ring_begin[v + 1]; ++r)
+          if(m.ring_face[r] != none && before[m.ring_face[r]] != own) ++count[before[m.ring_face[r]]];
+      }
+    return most_common_label(count, own);
+  };
+
+  struct Fan {
+    int label;
+    std::size_t first, size; // positions first, first + 1, ... (mod n) in the ring
+    std::int64_t area;
+  };
+  std::vector<char> cut(nf, 0);
+  std::vector<int> decided(nf, 0), ring;
+  std::vector<std::size_t> face_at, to_cut;
+  std::vector<Fan> fans;
+  std::map<int, std::vector<std::size_t>> fans_of;
+  std::vector<int> stuck;
+  std::size_t pinches = 0;
+  for(std::size_t v = 0; v < nv; ++v) {
+    const std::size_t b = m.ring_begin[v], n = m.ring_begin[v + 1] - b;
+    if(n < 2) continue;
+    face_at.assign(m.ring_face.begin() + std::ptrdiff_t(b), m.ring_face.begin() + std::ptrdiff_t(b + n));
+    ring.resize(n);
+    for(std::size_t i = 0; i < n; ++i) ring[i] = face_at[i] == none ? 0 : before[face_at[i]];
+
+    // Cut one pinched label at a time: cutting one can reconnect another (a
+    // saddle L, M, L, M needs one cut, not two).
+    stuck.clear();
+    for(std::size_t step = 0; step < n; ++step) {
+      // Fans are runs of one label in the cyclic ring; walk it from a fan's
+      // first face (after a border gap or a change of label), so that what
+      // is found does not depend on where the mesh starts the ring.
+      std::size_t start = n;
+      for(std::size_t i = 0; i < n && start == n; ++i) {
+        const std::size_t p = (i + n - 1) % n;
+        if(face_at[i] != none && (face_at[p] == none || ring[p] != ring[i])) start = i;
+      }
+      if(start == n) break; // one label all around
+      fans.clear();
+      for(std::size_t k = 0; k < n;) {
+        const std::size_t i = (start + k) % n;
+        if(face_at[i] == none) { ++k; continue; }
+        Fan fan{ring[i], i, 0, 0};
+        for(; k < n && face_at[(start + k) % n] != none && ring[(start + k) % n] == fan.label; ++k, ++fan.size)
+          fan.area += m.area[face_at[(start + k) % n]];
+        fans.push_back(fan);
+      }
+      fans_of.clear();
+      for(std::size_t k = 0; k < fans.size(); ++k) fans_of[fans[k].label].push_back(k);
+      bool found = false;
+      std::int64_t least = 0;
+      to_cut.clear();
+      for(const auto& [label, ks] : fans_of) { // increasing labels: on equal cost the smaller is cut
+        if(ks.size() < 2 || std::find(stuck.begin(), stuck.end(), label) != stuck.end()) continue;
+        std::int64_t largest = -1, total = 0;
+        std::size_t at_largest = 0;
+        for(std::size_t k : ks) {
+          total += fans[k].area;
+          if(fans[k].area > largest) largest = fans[k].area, at_largest = 0;
+          if(fans[k].area == largest) ++at_largest;
+        }
+        // Keep the largest fan; if two tie, nothing can choose between them: keep none.
+        const std::int64_t cost = at_largest == 1 ? total - largest : total;
+        if(found && cost >= least) continue;
+        found = true;
+        least = cost;
+        to_cut.clear();
+        for(std::size_t k : ks)
+          if(at_largest != 1 || fans[k].area != largest) to_cut.push_back(k);
+      }
+      if(!found) break;
+      bool moved = false;
+      for(std::size_t k : to_cut)
+        for(std::size_t t = 0; t < fans[k].size; ++t) {
+          const std::size_t i = (fans[k].first + t) % n;
+          const std::size_t f = face_at[i];
+          const int l = new_label(f);
+          if(l == before[f]) continue; // no other label anywhere near: leave it
+          ring[i] = l;
+          decided[f] = l;
+          cut[f] = 1;
+          moved = true;
+        }
+      if(moved) ++pinches;
+      else stuck.push_back(fans[to_cut.front()].label); // cannot be cut here: do not try again
+    }
+  }
+  for(std::size_t f = 0; f < nf; ++f)
+    if(cut[f]) {
+      labels[f] = decided[f];
+      ++pinch_faces;
+    }
+  return pinches;
+}
+
+} // namespace internal
+
+/// Cleans region labels by a fixed rule that depends only on the labels and
+/// the surface (see the top of this file): absorbs islands, smooths jagged
+/// region borders, cuts regions that touch themselves at a vertex; repeated
+/// until nothing changes. Two meshes of one object cleaned this way get the
+/// same regions wherever their labels agree, whatever their numbering.
+///
+/// \tparam TriangleMesh a model of `FaceListGraph` and `VertexListGraph` with
+///         internal face and vertex indices, triangles only
+/// \tparam VertexPointMap a readable property map from vertex to a CGAL point
+/// \param face_labels #F entries, by face index: the labels, changed in place
+/// \returns what each rule did and how many faces changed label
+/// \throws std::invalid_argument if `face_labels` does not have `num_faces(tm)`
+///         entries, a face is not a triangle, or `options.island_fraction` is
+///         not a number in [0, 1]
+template <class TriangleMesh, class VertexPointMap>
+Label_cleaning_report clean_labels(const TriangleMesh& tm, VertexPointMap vpm, std::vector<int>& face_labels,
+                                   const Label_cleaning_options& options = Label_cleaning_options())
+{
+  static_assert(std::is_convertible<typename boost::graph_traits<TriangleMesh>::vertex_descriptor,
+                                    typename boost::property_traits<VertexPointMap>::key_type>::value,
+                "clean_labels: VertexPointMap must be a property map from the mesh's vertex_descriptor to a point");
+  if(face_labels.size() != static_cast<std::size_t>(num_faces(tm)))
+    throw std::invalid_argument("clean_labels: face_labels must have one entry per face");
+  if(!CGAL::is_triangle_mesh(tm))
+    throw std::invalid_argument("clean_labels: the mesh must have triangle faces only");
+  if(!(options.island_fraction >= 0. && options.island_fraction <= 1.))
+    throw std::invalid_argument("clean_labels: options.island_fraction must be in [0, 1]");
+
+  const internal::Label_cleaning_mesh m = internal::make_label_cleaning_mesh(tm, vpm);
+  const std::vector<int> input = face_labels;
+  Label_cleaning_report r;
+  for(std::size_t round = 0; round < options.max_rounds; ++round) {
+    ++r.rounds;
+    const std::vector<int> start = face_labels;
+    r.islands += internal::absorb_islands(m, face_labels, options.island_fraction, r.island_faces);
+    r.smoothed_faces += internal::smooth_borders_synchronously(m, face_labels, options.smoothing_passes);
+    r.pinches += internal::cut_pinches(m, face_labels, r.pinch_faces);
+    if(face_labels == start) break;
+  }
+  for(std::size_t f = 0; f < input.size(); ++f)
+    if(face_labels[f] != input[f]) ++r.changed;
+  return r;
+}
+
+} // namespace diffuv
+
+#endif // DIFFUV_PATCHES_CLEAN_LABELS_H
