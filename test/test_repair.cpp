@@ -8,7 +8,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <random>
+#include <set>
 
 namespace {
 
@@ -226,9 +229,33 @@ TEST(FlatTriangles, AutomaticCornersPutACornerOnTheEarsTip)
   std::array<std::size_t, 4> corners{};
   const std::vector<vertex_descriptor> given = {grid_vertex(4, 0, 0), grid_vertex(4, 4, 0), grid_vertex(4, 4, 4), grid_vertex(4, 0, 4)};
   for(std::size_t c = 0; c < 4; ++c) corners[c] = static_cast<std::size_t>(std::find(loop.begin(), loop.end(), given[c]) - loop.begin());
-  EXPECT_EQ(diffuv::separate_flat_triangles(m, loop, corners, [](auto) { return true; }), 1u);
+  std::vector<double> lengths(loop.size());
+  for(std::size_t i = 0; i < loop.size(); ++i)
+    lengths[i] = std::sqrt(CGAL::squared_distance(m.point(loop[i]), m.point(loop[(i + 1) % loop.size()])));
+  const std::array<std::size_t, 4> before = corners;
+  EXPECT_EQ(diffuv::separate_flat_triangles(m, loop, corners, [](auto) { return true; }, lengths), 1u);
   EXPECT_TRUE(std::find(corners.begin(), corners.end(),
                         static_cast<std::size_t>(std::find(loop.begin(), loop.end(), tip) - loop.begin())) != corners.end());
+
+  // The same corners whichever vertex the loop starts at.
+  for(std::size_t shift = 1; shift < loop.size(); shift += 3) {
+    std::vector<vertex_descriptor> rotated(loop.size());
+    std::vector<double> rotated_lengths(loop.size());
+    for(std::size_t i = 0; i < loop.size(); ++i) {
+      rotated[i] = loop[(i + shift) % loop.size()];
+      rotated_lengths[i] = lengths[(i + shift) % loop.size()];
+    }
+    std::array<std::size_t, 4> at{};
+    for(std::size_t c = 0; c < 4; ++c) at[c] = (before[c] + loop.size() - shift) % loop.size();
+    std::sort(at.begin(), at.end());
+    diffuv::separate_flat_triangles(m, rotated, at, [](auto) { return true; }, rotated_lengths);
+    std::set<vertex_descriptor> expected, got;
+    for(std::size_t c = 0; c < 4; ++c) {
+      expected.insert(loop[corners[c]]);
+      got.insert(rotated[at[c]]);
+    }
+    EXPECT_EQ(got, expected) << "loop starting " << shift << " vertices later";
+  }
 
   diffuv::Uv_atlas<Mesh> atlas(m);
   diffuv::Repair_report report;

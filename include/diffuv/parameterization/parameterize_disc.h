@@ -64,7 +64,11 @@ Status parameterize_disc(const TriangleMesh& tm,
     std::array<std::size_t, 4> at{};
     for(std::size_t c = 0; c < 4; ++c)
       at[c] = static_cast<std::size_t>(std::find(loop.begin(), loop.end(), chosen[c]) - loop.begin());
-    separate_flat_triangles(tm, loop, at, [](auto) { return true; });
+    const auto vpm = get(CGAL::vertex_point, tm);
+    std::vector<double> loop_lengths(loop.size());
+    for(std::size_t i = 0; i < loop.size(); ++i)
+      loop_lengths[i] = std::sqrt(CGAL::to_double(CGAL::squared_distance(get(vpm, loop[i]), get(vpm, loop[(i + 1) % loop.size()]))));
+    separate_flat_triangles(tm, loop, at, [](auto) { return true; }, loop_lengths);
     for(std::size_t c = 0; c < 4; ++c) chosen[c] = loop[at[c]];
   }
 

@@ -42,6 +42,7 @@ struct Patch_result {
 /// A patch that fails (not a disc, too short a boundary) gets no chart; the
 /// others are still mapped.
 ///
+/// \param corner_names if given, #P entries: corners to follow (see `region_sides()`)
 /// \returns #P results, one per patch
 template <class TriangleMesh, class VertexPointMap, class DistanceTag = Default_distance_tag,
           class HeapTag = Fibonacci_heap_tag>
@@ -49,7 +50,8 @@ std::vector<Patch_result<TriangleMesh>> parameterize_patches(const TriangleMesh&
                                                              const Segmentation<TriangleMesh>& seg,
                                                              VertexPointMap vpm, Uv_atlas<TriangleMesh>& atlas,
                                                              DistanceTag = DistanceTag(), HeapTag = HeapTag(),
-                                                             const Repair_options& repair = Repair_options())
+                                                             const Repair_options& repair = Repair_options(),
+                                                             const std::vector<Corner_names>* corner_names = nullptr)
 {
   using Patch = CGAL::Face_filtered_graph<TriangleMesh>;
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
@@ -61,7 +63,9 @@ std::vector<Patch_result<TriangleMesh>> parameterize_patches(const TriangleMesh&
     Patch_result<TriangleMesh>& r = results[p];
     const auto start = std::chrono::steady_clock::now();
     r.status = check_patch_disc(tm, seg, p);
-    if(r.status) r.status = region_sides(tm, seg, p, vpm, r.sides, &r.side_report);
+    if(r.status)
+      r.status = region_sides(tm, seg, p, vpm, r.sides, &r.side_report,
+                              corner_names && p < corner_names->size() ? &(*corner_names)[p] : nullptr);
     if(!r.status) continue;
 
     const Patch patch(tm, seg.patch_faces[p]);

@@ -30,6 +30,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <string>
 #include <vector>
@@ -192,17 +193,21 @@ equal_arc_corners(const TriangleMesh& tm, VertexPointMap vpm,
 /// Its middle vertex along the side becomes a corner: one of the side's two
 /// corners moves there, whichever leaves fewer such triangles; this repeats
 /// while it helps (a border of ears only cannot be helped). The corners keep
-/// their cyclic order and stay distinct.
+/// their cyclic order and stay distinct. Among moves that leave as few flat
+/// triangles, the one that moves a corner the shortest arc length wins, so
+/// the result does not depend on where the loop starts (nor on vertex order).
 ///
 /// \tparam FaceGraph a model of `FaceGraph`
 /// \tparam InPatch a predicate on faces: whether a face belongs to the patch bounded by `loop`
 /// \param loop the patch's boundary, counter-clockwise
 /// \param corners four positions in `loop`, in counter-clockwise order; updated
+/// \param edge_lengths n entries: length of the loop edge from position i to i+1
 /// \returns how many times a corner moved
 template <class FaceGraph, class InPatch>
 std::size_t separate_flat_triangles(const FaceGraph& g,
                                     const std::vector<typename boost::graph_traits<FaceGraph>::vertex_descriptor>& loop,
-                                    std::array<std::size_t, 4>& corners, InPatch in_patch)
+                                    std::array<std::size_t, 4>& corners, InPatch in_patch,
+                                    const std::vector<double>& edge_lengths)
 {
   using vertex_descriptor = typename boost::graph_traits<FaceGraph>::vertex_descriptor;
   const std::size_t n = loop.size();
@@ -247,9 +252,13 @@ std::size_t separate_flat_triangles(const FaceGraph& g,
   // Greedy: move one of the two corners of a flat face's side onto the face's
   // middle vertex, whichever leaves fewer flat faces; stop when no move helps
   // (e.g. a border made of ears only), so this always terminates.
+  std::vector<double> at(n + 1, 0.);  // arc length at each loop position
+  for(std::size_t i = 0; i < n; ++i) at[i + 1] = at[i] + edge_lengths[i];
+  auto arc = [&](std::size_t a, std::size_t b) { return b >= a ? at[b] - at[a] : at[n] - at[a] + at[b]; };
   std::size_t moves = 0;
   for(std::size_t flat = count_flat(corners); flat > 0;) {
     std::size_t best_flat = flat;
+    double best_shift = std::numeric_limits<double>::infinity();
     std::array<std::size_t, 4> best = corners;
     for(const auto& t : border_faces) {
       const std::size_t s = flat_side(t, corners);
@@ -262,8 +271,11 @@ std::size_t separate_flat_triangles(const FaceGraph& g,
         std::array<std::size_t, 4> candidate = corners;
         candidate[c] = middle;
         const std::size_t candidate_flat = count_flat(candidate);
-        if(candidate_flat < best_flat) {
+        // The corner moves along side s: forwards from corners[s], backwards from corners[s+1].
+        const double shift = c == s ? arc(corners[s], middle) : arc(middle, corners[c]);
+        if(candidate_flat < best_flat || (candidate_flat == best_flat && best_flat < flat && shift < best_shift)) {
           best_flat = candidate_flat;
+          best_shift = shift;
           best = candidate;
         }
       }
