@@ -33,7 +33,8 @@ enum class Status_code {
   corner_duplicated,      ///< the same vertex is given twice as a corner
   border_too_short,       ///< fewer than four vertices on the boundary loop
   unreachable_vertices,   ///< some vertices are not reached from a side
-  not_injective           ///< the (u,v) map still folds after the repair
+  not_injective,          ///< the (u,v) map still folds after the repair
+  no_labels               ///< a mesh has no region labels where they are needed (correspondence)
 };
 
 /// Returns the fixed English sentence for `code`.
@@ -59,6 +60,7 @@ inline const char* message(Status_code code)
     case Status_code::border_too_short: return "the boundary has fewer than four vertices";
     case Status_code::not_injective: return "the (u,v) map still folds after the repair";
     case Status_code::unreachable_vertices: return "some vertices are not reached from every side";
+    case Status_code::no_labels: return "the mesh has no region labels";
   }
   return "unknown status"; // unreachable for valid enum values
 }

@@ -257,6 +257,7 @@ public:
     const Chart& chart = this->chart(c);
     Incremental_search search(*chart.tree, q, 0., true, Distance(Local_uv_map{chart.uv.data()}));
     double best = std::numeric_limits<double>::infinity();
+    bool best_flat = true;
     std::size_t best_face = 0;
     std::array<double, 3> best_bary{1., 0., 0.};
     std::vector<Local_index> tested;
@@ -269,16 +270,21 @@ public:
         if(std::find(tested.begin(), tested.end(), f) != tested.end()) continue;
         tested.push_back(f);
         std::array<double, 3> bary;
-        const double d = distance_to_triangle(chart, f, q, bary);
-        if(d < best) {
+        bool flat = false;
+        const double d = distance_to_triangle(chart, f, q, bary, flat);
+        // A flat uv triangle (three vertices on one side) contains the points
+        // of its segment many times over: any other triangle as near is better,
+        // so that the answer does not depend on which one is met first.
+        if(d < best || (d == best && best_flat && !flat)) {
           best = d;
+          best_flat = flat;
           best_face = f;
           best_bary = bary;
-          if(d == 0.) return make_location(chart, best_face, best_bary, true, 0.);
+          if(d == 0. && !flat) return make_location(chart, best_face, best_bary, true, 0.);
         }
       }
     }
-    return make_location(chart, best_face, best_bary, false, best);
+    return make_location(chart, best_face, best_bary, best == 0., best);
   }
 
   /// The 3D point of a located (u,v), through the mesh's vertex point map.
@@ -310,7 +316,8 @@ private:
   // Distance from q to triangle f of the chart (0 inside), and the barycentric
   // coordinates of the nearest point. Degenerate uv triangles are only reached
   // through their edges.
-  static double distance_to_triangle(const Chart& chart, std::size_t f, const Point_2& q, std::array<double, 3>& bary)
+  static double distance_to_triangle(const Chart& chart, std::size_t f, const Point_2& q, std::array<double, 3>& bary,
+                                     bool& flat)
   {
     const auto& t = chart.triangles[f];
     const double ax = chart.uv[t[0]].x(), ay = chart.uv[t[0]].y();
@@ -318,6 +325,7 @@ private:
     const double cx = chart.uv[t[2]].x(), cy = chart.uv[t[2]].y();
     const double qx = q.x(), qy = q.y();
     const double area = (bx - ax) * (cy - ay) - (cx - ax) * (by - ay);
+    flat = area == 0.;
     if(area != 0.) {
       const double l0 = ((bx - qx) * (cy - qy) - (cx - qx) * (by - qy)) / area;
       const double l1 = ((cx - qx) * (ay - qy) - (ax - qx) * (cy - qy)) / area;

@@ -1,0 +1,122 @@
+// diffuv: a labelled mesh made ready for correspondence — labels cleaned,
+// regions cut into disc patches, every patch mapped onto its square.
+//
+// The paper (section 1.1.3 and its conclusion): two meshes segmented into the
+// same regions are linked by giving each surface point the same
+// (region, u, v). Everything between the labels and (u,v) — the cleaning, the
+// cut of a non-disc region, the split of a cap, the sides and corners — depends
+// only on the labels and the surface, so it lands in the same place on both.
+#ifndef DIFFUV_CORRESPONDENCE_LABELLED_ATLAS_H
+#define DIFFUV_CORRESPONDENCE_LABELLED_ATLAS_H
+
+#include <diffuv/atlas/Uv_atlas.h>
+#include <diffuv/error.h>
+#include <diffuv/graph/distance_tags.h>
+#include <diffuv/parameterization/parameterize_patches.h>
+#include <diffuv/parameterization/repair_folds.h>
+#include <diffuv/patches/clean_labels.h>
+#include <diffuv/patches/disc_patches.h>
+
+#include <map>
+#include <stdexcept>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+namespace diffuv {
+
+/// Options of `build_labelled_atlas()`.
+struct Labelled_atlas_options {
+  bool clean = true;                  ///< clean the labels first (`clean_labels()`)
+  Label_cleaning_options cleaning;
+  Patching_options patching;          ///< cut of non-disc regions, split of caps
+  Repair_options repair;              ///< fold repair of each chart
+};
+
+/// A mesh with region labels, cut into disc patches, each patch a chart.
+template <class TriangleMesh>
+struct Labelled_atlas {
+  explicit Labelled_atlas(const TriangleMesh& tm) : atlas(tm) {}
+
+  std::vector<int> face_labels;                       ///< #F entries: the labels after cleaning
+  Label_cleaning_report cleaning;                     ///< what the cleaning changed
+  Segmentation<TriangleMesh> segmentation;            ///< disc patches, each a (label, part)
+  Patching_report patching;                           ///< regions cut, caps split
+  std::vector<Patch_result<TriangleMesh>> patches;    ///< #P entries: each patch's chart (or why it has none)
+  Uv_atlas<TriangleMesh> atlas;                       ///< one chart per mapped patch
+
+  const TriangleMesh& mesh() const { return atlas.mesh(); }
+};
+
+/// What pairs a patch of one mesh with a patch of another: (region label,
+/// part, rank). The part numbers the pieces of a cut region and the halves of
+/// a split cap; the rank orders the patches with the same label and part (the
+/// components of one label) by decreasing area.
+using Patch_key = std::tuple<int, int, int>;
+
+/// The key of every patch of `seg`, by patch.
+template <class TriangleMesh>
+std::vector<Patch_key> patch_keys(const Segmentation<TriangleMesh>& seg)
+{
+  std::vector<Patch_key> keys;
+  std::map<std::pair<int, int>, int> rank;
+  for(std::size_t p = 0; p < seg.number_of_patches(); ++p)
+    keys.emplace_back(seg.patch_label[p], seg.patch_part[p], rank[{seg.patch_label[p], seg.patch_part[p]}]++);
+  return keys;
+}
+
+/// The corners of every mapped patch of `atlas` by their regions, by patch key:
+/// what another mesh's atlas follows (`build_labelled_atlas()`'s `follow`).
+template <class TriangleMesh>
+std::map<Patch_key, Corner_names> corner_names_by_key(const Labelled_atlas<TriangleMesh>& atlas)
+{
+  std::map<Patch_key, Corner_names> names;
+  const std::vector<Patch_key> keys = patch_keys(atlas.segmentation);
+  for(std::size_t p = 0; p < keys.size() && p < atlas.patches.size(); ++p)
+    if(atlas.patches[p].status && atlas.patches[p].side_report.names.valid)
+      names.emplace(keys[p], atlas.patches[p].side_report.names);
+  return names;
+}
+
+/// Cleans `face_labels`, cuts the regions into disc patches and maps each
+/// patch onto its square (`parameterize_patches()`).
+///
+/// With `follow` (the `corner_names_by_key()` of another mesh's atlas), a
+/// patch with the same key takes its corners at the same junctions of regions
+/// as there, where they are found (`region_sides()`): two meshes whose labels
+/// differ a little along borders then agree on their corners.
+///
+/// \param face_labels #F entries (by face index); empty means "no labels"
+/// \returns `no_labels` if `face_labels` is empty (a correspondence needs the
+///          same regions on both meshes: automatic patches would not match);
+///          otherwise `ok` — patches that are not discs or could not be mapped
+///          are reported in `out.patching.not_discs` and `out.patches[p].status`
+/// \throws std::invalid_argument if `face_labels` has neither 0 nor #F entries
+template <class TriangleMesh, class VertexPointMap, class DistanceTag = Default_distance_tag>
+Status build_labelled_atlas(const TriangleMesh& tm, VertexPointMap vpm, std::vector<int> face_labels,
+                            Labelled_atlas<TriangleMesh>& out,
+                            const Labelled_atlas_options& options = Labelled_atlas_options(),
+                            DistanceTag distance = DistanceTag(),
+                            const std::map<Patch_key, Corner_names>* follow = nullptr)
+{
+  if(face_labels.empty()) return Status(Status_code::no_labels);
+  if(face_labels.size() != num_faces(tm))
+    throw std::invalid_argument("build_labelled_atlas: face_labels must have one entry per face");
+  if(options.clean) out.cleaning = clean_labels(tm, vpm, face_labels, options.cleaning);
+  out.face_labels = face_labels;
+  disc_patches(tm, std::move(face_labels), vpm, out.segmentation, options.patching, &out.patching);
+  std::vector<Corner_names> names;
+  if(follow) {
+    for(const Patch_key& key : patch_keys(out.segmentation)) {
+      const auto it = follow->find(key);
+      names.push_back(it == follow->end() ? Corner_names() : it->second);
+    }
+  }
+  out.patches = parameterize_patches(tm, out.segmentation, vpm, out.atlas, distance, Fibonacci_heap_tag(),
+                                     options.repair, follow ? &names : nullptr);
+  return Status();
+}
+
+} // namespace diffuv
+
+#endif // DIFFUV_CORRESPONDENCE_LABELLED_ATLAS_H

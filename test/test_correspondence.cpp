@@ -1,0 +1,377 @@
+// Correspondence through (region, u, v): pairing of patches, mapping of
+// vertices and surface points, seams, labels only in one mesh, labels that need
+// cleaning, and attribute transfer.
+#include "test_data.h"
+
+#include <diffuv/correspondence/correspondence.h>
+#include <diffuv/correspondence/labelled_atlas.h>
+#include <diffuv/correspondence/nearest_face_labels.h>
+#include <diffuv/correspondence/transfer.h>
+#include <diffuv/patches/disc_patches.h>
+
+#include <CGAL/Polygon_mesh_processing/measure.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <random>
+#include <vector>
+
+namespace {
+
+using diffuv_test::Mesh;
+using diffuv_test::Point_3;
+using Atlas = diffuv::Labelled_atlas<Mesh>;
+using Correspondence = diffuv::Atlas_correspondence<Mesh, Mesh>;
+using vertex_descriptor = Mesh::Vertex_index;
+using face_descriptor = Mesh::Face_index;
+
+// Labels of automatic disc patches (what `diffuv segment` writes).
+std::vector<int> segment_labels(const Mesh& m, std::size_t patches = 12)
+{
+  diffuv::Segmentation<Mesh> seg;
+  diffuv::Patching_options options;
+  options.automatic.patches = patches;
+  EXPECT_TRUE(diffuv::disc_patches(m, std::vector<int>(), m.points(), seg, options).ok());
+  std::vector<int> labels(num_faces(m));
+  for(auto f : faces(m)) labels[f.idx()] = static_cast<int>(seg.face_patch[f.idx()]);
+  return labels;
+}
+
+// A copy of `m` with vertices and faces in a random order, moved by a
+// rotation, a scale and a translation: vertex_of[v] is the copy of vertex v,
+// face_of[f] the copy of face f.
+struct Moved_copy {
+  Mesh mesh;
+  std::vector<vertex_descriptor> vertex_of;
+  std::vector<face_descriptor> face_of;
+  double scale = 1.;
+};
+
+Moved_copy shuffled_moved_copy(const Mesh& m, unsigned seed, bool move)
+{
+  Moved_copy c;
+  std::mt19937 rng(seed);
+  std::vector<std::size_t> vperm(num_vertices(m)), fperm(num_faces(m));
+  std::iota(vperm.begin(), vperm.end(), 0);
+  std::iota(fperm.begin(), fperm.end(), 0);
+  std::shuffle(vperm.begin(), vperm.end(), rng); // new vertex k is old vertex vperm[k]
+  std::shuffle(fperm.begin(), fperm.end(), rng);
+  c.scale = move ? 2.5 : 1.;
+  const double a = 0.7, b = -1.1;  // rotation angles about z then x
+  c.vertex_of.resize(num_vertices(m));
+  for(std::size_t k = 0; k < vperm.size(); ++k) {
+    const Point_3& p = m.point(vertex_descriptor(static_cast<Mesh::size_type>(vperm[k])));
+    Point_3 q = p;
+    if(move) {
+      const double x1 = std::cos(a) * p.x() - std::sin(a) * p.y(), y1 = std::sin(a) * p.x() + std::cos(a) * p.y();
+      const double y2 = std::cos(b) * y1 - std::sin(b) * p.z(), z2 = std::sin(b) * y1 + std::cos(b) * p.z();
+      q = Point_3(c.scale * x1 + 3., c.scale * y2 - 7., c.scale * z2 + 1.);
+    }
+    c.vertex_of[vperm[k]] = c.mesh.add_vertex(q);
+  }
+  c.face_of.resize(num_faces(m));
+  for(std::size_t k = 0; k < fperm.size(); ++k) {
+    const face_descriptor f(static_cast<Mesh::size_type>(fperm[k]));
+    std::vector<vertex_descriptor> fv;
+    for(auto v : CGAL::vertices_around_face(m.halfedge(f), m)) fv.push_back(c.vertex_of[v.idx()]);
+    c.face_of[f.idx()] = c.mesh.add_face(fv);
+  }
+  return c;
+}
+
+std::vector<int> carry_labels(const std::vector<int>& labels, const Moved_copy& c)
+{
+  std::vector<int> out(labels.size());
+  for(std::size_t f = 0; f < labels.size(); ++f) out[c.face_of[f].idx()] = labels[f];
+  return out;
+}
+
+double sqrt_area(const Mesh& m) { return std::sqrt(CGAL::Polygon_mesh_processing::area(m)); }
+
+// Build both atlases; the caller keeps them alive for the correspondence.
+void build(const Mesh& m, const std::vector<int>& labels, Atlas& atlas,
+           const diffuv::Labelled_atlas_options& options = diffuv::Labelled_atlas_options())
+{
+  ASSERT_TRUE(diffuv::build_labelled_atlas(m, m.points(), labels, atlas, options).ok());
+}
+
+// Vertex (label, part) set-up shared by several tests: cow, its automatic patches.
+const Mesh& cow() { return diffuv_test::cgal_mesh("cow.off"); }
+
+TEST(Correspondence, NoLabelsIsAnError)
+{
+  Atlas atlas(cow());
+  const diffuv::Status s = diffuv::build_labelled_atlas(cow(), cow().points(), std::vector<int>(), atlas);
+  EXPECT_EQ(s.code, diffuv::Status_code::no_labels);
+  EXPECT_NE(std::string(s.what()).find("no region labels"), std::string::npos);
+}
+
+// The shuffled pair: every vertex lands on its own copy, whatever the order,
+// position, scale and orientation of the copy.
+TEST(Correspondence, ShuffledAndMovedCopyMapsEveryVertexOntoItself)
+{
+  const Mesh& a = cow();
+  const std::vector<int> labels = segment_labels(a);
+  for(bool move : {false, true}) {
+    const Moved_copy b = shuffled_moved_copy(a, 11, move);
+    Atlas atlas_a(a), atlas_b(b.mesh);
+    build(a, labels, atlas_a);
+    build(b.mesh, carry_labels(labels, b), atlas_b);
+    const Correspondence c(atlas_a, atlas_b);
+    EXPECT_EQ(c.report().matched_patches, atlas_a.atlas.number_of_charts());
+    EXPECT_TRUE(c.report().labels_only_in_a.empty());
+    EXPECT_TRUE(c.report().unmatched_patches_a.empty());
+    const auto images = c.map_vertices();
+    const double tolerance = 1e-9 * sqrt_area(b.mesh);
+    double worst = 0;
+    for(auto v : vertices(a)) {
+      ASSERT_TRUE(images[v.idx()].mapped());
+      worst = (std::max)(worst, std::sqrt(CGAL::squared_distance(images[v.idx()].point, b.mesh.point(b.vertex_of[v.idx()]))));
+    }
+    EXPECT_LE(worst, tolerance) << (move ? "moved copy" : "shuffled copy");
+  }
+}
+
+// Regions that need the automatic steps: height bands of cow give rings (cut
+// into discs) and caps (split); they must land in the same place on a moved,
+// shuffled copy, so the (label, part) keys pair up and vertices map onto themselves.
+TEST(Correspondence, CutsAndCapSplitsAreIntrinsic)
+{
+  const Mesh& a = cow();
+  CGAL::Bbox_3 box;
+  for(auto v : vertices(a)) box += a.point(v).bbox();
+  std::vector<int> labels(num_faces(a));
+  for(auto f : faces(a)) {
+    double z = 0;
+    for(auto v : CGAL::vertices_around_face(a.halfedge(f), a)) z += a.point(v).y() / 3;
+    labels[f.idx()] = static_cast<int>(std::floor(3.999 * (z - box.ymin()) / (box.ymax() - box.ymin())));
+  }
+  // One label per connected band piece: two pieces of one label with nearly
+  // equal areas (cow's ears) would pair by area rank, which is ambiguous.
+  const auto pieces = diffuv::patches_from_labels(a, labels, a.points());
+  for(auto f : faces(a)) labels[f.idx()] = static_cast<int>(pieces.face_patch[f.idx()]);
+  const Moved_copy b = shuffled_moved_copy(a, 5, true);
+  Atlas atlas_a(a), atlas_b(b.mesh);
+  build(a, labels, atlas_a);
+  build(b.mesh, carry_labels(labels, b), atlas_b);
+  EXPECT_GT(atlas_a.patching.cut + atlas_a.patching.caps_split, 0u) << "the bands should need cuts or cap splits";
+  EXPECT_EQ(atlas_a.segmentation.number_of_patches(), atlas_b.segmentation.number_of_patches());
+  const Correspondence c(atlas_a, atlas_b);
+  EXPECT_TRUE(c.report().unmatched_patches_a.empty());
+  const auto images = c.map_vertices();
+  std::size_t far = 0, unmapped = 0;
+  const double tolerance = 1e-6 * sqrt_area(b.mesh);
+  for(auto v : vertices(a)) {
+    if(!images[v.idx()].mapped()) { ++unmapped; continue; }
+    const double d = std::sqrt(CGAL::squared_distance(images[v.idx()].point, b.mesh.point(b.vertex_of[v.idx()])));
+    if(d > tolerance) {
+      ++far;
+      if(far < 6) {
+        auto e = atlas_a.atlas.entries(v);
+        std::cerr << "far vertex " << v.idx() << " d/sqrtA=" << d / sqrt_area(b.mesh) << " charts:";
+        for(auto it = e.first; it != e.second; ++it) std::cerr << ' ' << it->chart << "(" << std::get<0>(c.key_a(it->chart)) << "." << std::get<1>(c.key_a(it->chart)) << ")";
+        std::cerr << " inside " << images[v.idx()].inside << "\n";
+      }
+    }
+  }
+  EXPECT_EQ(unmapped, 0u);
+  EXPECT_EQ(far, 0u);
+}
+
+// A point on an edge between two charts, or a vertex on a patch border, maps to
+// the same place from either side.
+TEST(Correspondence, SeamPointsMapToOnePlaceFromEitherPatch)
+{
+  const Mesh& a = cow();
+  const std::vector<int> labels = segment_labels(a);
+  const Moved_copy b = shuffled_moved_copy(a, 3, false);
+  Atlas atlas_a(a), atlas_b(b.mesh);
+  build(a, labels, atlas_a);
+  build(b.mesh, carry_labels(labels, b), atlas_b);
+  const Correspondence c(atlas_a, atlas_b);
+  std::size_t seam_edges = 0;
+  for(auto e : edges(a)) {
+    const auto h = a.halfedge(e), o = a.opposite(h);
+    if(a.is_border(h) || a.is_border(o)) continue;
+    const face_descriptor f = a.face(h), g = a.face(o);
+    if(atlas_a.atlas.chart_of(f) == atlas_a.atlas.chart_of(g)) continue;
+    ++seam_edges;
+    // The point 30% of the way from source(h) to target(h), given on either face.
+    auto location_on = [&](face_descriptor face_of_point) {
+      std::array<double, 3> bary{{0., 0., 0.}};
+      const auto fh = a.halfedge(face_of_point);
+      const vertex_descriptor corner[3] = {a.source(fh), a.target(fh), a.target(a.next(fh))};
+      for(int k = 0; k < 3; ++k) {
+        if(corner[k] == a.source(h)) bary[k] = 0.7;
+        if(corner[k] == a.target(h)) bary[k] = 0.3;
+      }
+      return bary;
+    };
+    const auto p = c.map_point(f, location_on(f)), q = c.map_point(g, location_on(g));
+    ASSERT_TRUE(p.mapped() && q.mapped());
+    EXPECT_EQ(CGAL::squared_distance(p.point, q.point), 0.);
+  }
+  EXPECT_GT(seam_edges, 100u);
+  // A vertex given as a face corner maps as the vertex itself.
+  for(auto f : faces(a)) {
+    const auto images = c.map_point(f, {{1., 0., 0.}});
+    const auto direct = c.map_vertex(a.source(a.halfedge(f)));
+    EXPECT_EQ(images.point, direct.point);
+  }
+}
+
+// A label that B lacks is reported; its vertices are not mapped, the rest are.
+TEST(Correspondence, LabelInOneMeshOnlyIsReported)
+{
+  const Mesh& a = cow();
+  std::vector<int> labels = segment_labels(a);
+  const Moved_copy b = shuffled_moved_copy(a, 9, false);
+  std::vector<int> labels_b = carry_labels(labels, b);
+  // B merges region 3 into the region next to it: label 3 is only in A.
+  int neighbour = -1;
+  for(auto h : halfedges(a))
+    if(!a.is_border(h) && !a.is_border(a.opposite(h)) && labels[a.face(h).idx()] == 3 &&
+       labels[a.face(a.opposite(h)).idx()] != 3) {
+      neighbour = labels[a.face(a.opposite(h)).idx()];
+      break;
+    }
+  ASSERT_GE(neighbour, 0);
+  for(int& l : labels_b) if(l == 3) l = neighbour;
+  Atlas atlas_a(a), atlas_b(b.mesh);
+  build(a, labels, atlas_a);
+  build(b.mesh, labels_b, atlas_b);
+  const Correspondence c(atlas_a, atlas_b);
+  EXPECT_EQ(c.report().labels_only_in_a, std::vector<int>{3});
+  EXPECT_TRUE(c.report().labels_only_in_b.empty());
+  const auto images = c.map_vertices();
+  std::size_t inside_3 = 0;
+  for(auto v : vertices(a)) {
+    bool only_3 = true;
+    for(auto f : CGAL::faces_around_target(a.halfedge(v), a))
+      if(f != Mesh::null_face() && labels[f.idx()] != 3) only_3 = false;
+    if(only_3) {
+      ++inside_3;
+      EXPECT_FALSE(images[v.idx()].mapped());
+    } else {
+      EXPECT_TRUE(images[v.idx()].mapped());
+    }
+  }
+  EXPECT_GT(inside_3, 10u);
+}
+
+// B's labels as a person or a transfer makes them: islands and a jagged border.
+// The cleaning brings most of them back to A's regions, and B follows A's
+// corners by name, so the map is far closer than without cleaning.
+TEST(Correspondence, LabelsThatNeedCleaning)
+{
+  const Mesh& a = cow();
+  const std::vector<int> labels = segment_labels(a);
+  const Moved_copy b = shuffled_moved_copy(a, 21, false);
+  std::vector<int> noisy = carry_labels(labels, b);
+  // Every 7th face that touches another region takes that region's label.
+  std::size_t changed = 0, k = 0;
+  for(auto f : faces(a)) {
+    const auto h0 = a.halfedge(f);
+    for(auto h : CGAL::halfedges_around_face(h0, a)) {
+      const auto g = a.face(a.opposite(h));
+      if(g == Mesh::null_face() || labels[g.idx()] == labels[f.idx()]) continue;
+      if(++k % 7 == 0) {
+        noisy[b.face_of[f.idx()].idx()] = labels[g.idx()];
+        ++changed;
+      }
+      break;
+    }
+  }
+  ASSERT_GT(changed, 50u);
+  Atlas atlas_a(a), clean_b(b.mesh), raw_b(b.mesh);
+  build(a, labels, atlas_a);
+  const auto follow = diffuv::corner_names_by_key(atlas_a);
+  ASSERT_TRUE(diffuv::build_labelled_atlas(b.mesh, b.mesh.points(), noisy, clean_b, {}, diffuv::Default_distance_tag(), &follow).ok());
+  diffuv::Labelled_atlas_options no_cleaning;
+  no_cleaning.clean = false;
+  ASSERT_TRUE(diffuv::build_labelled_atlas(b.mesh, b.mesh.points(), noisy, raw_b, no_cleaning, diffuv::Default_distance_tag(), &follow).ok());
+  EXPECT_FALSE(clean_b.cleaning.empty());
+
+  auto mean_error = [&](const Atlas& atlas_b, std::size_t& unmapped) {
+    const Correspondence c(atlas_a, atlas_b);
+    const auto images = c.map_vertices();
+    double sum = 0;
+    unmapped = 0;
+    for(auto v : vertices(a)) {
+      if(!images[v.idx()].mapped()) { ++unmapped; continue; }
+      sum += std::sqrt(CGAL::squared_distance(images[v.idx()].point, b.mesh.point(b.vertex_of[v.idx()])));
+    }
+    return sum / (num_vertices(a) - unmapped) / sqrt_area(b.mesh);
+  };
+  std::size_t unmapped_clean = 0, unmapped_raw = 0;
+  const double clean_error = mean_error(clean_b, unmapped_clean);
+  const double raw_error = mean_error(raw_b, unmapped_raw);
+  // Measured: 0.026 cleaned, 0.056 raw (mean error / sqrt(area)); every
+  // seventh border face is a harsher noise than a transfer makes.
+  EXPECT_EQ(unmapped_clean, 0u);
+  EXPECT_LT(clean_error, 0.04);
+  EXPECT_TRUE(unmapped_raw > 0 || raw_error > 1.5 * clean_error)
+      << "raw: " << raw_error << " (" << unmapped_raw << " unmapped), cleaned: " << clean_error;
+  // The cleaned patches took the corners of A's (named by their regions).
+  for(const auto& patch : clean_b.patches) EXPECT_TRUE(patch.side_report.named);
+}
+
+// Per-vertex values of B pulled onto A: interpolating B's own coordinates gives
+// back the mapped point, colours are rounded, points are affine mixes.
+TEST(Correspondence, TransferInterpolatesBarycentrically)
+{
+  const Mesh& a = cow();
+  const std::vector<int> labels = segment_labels(a);
+  const Moved_copy b = shuffled_moved_copy(a, 2, true);
+  Atlas atlas_a(a), atlas_b(b.mesh);
+  build(a, labels, atlas_a);
+  build(b.mesh, carry_labels(labels, b), atlas_b);
+  const Correspondence c(atlas_a, atlas_b);
+  const auto images = c.map_vertices();
+
+  std::vector<double> x_of(num_vertices(b.mesh));
+  std::vector<std::array<unsigned char, 3>> color_of(num_vertices(b.mesh));
+  for(auto v : vertices(b.mesh)) {
+    x_of[v.idx()] = b.mesh.point(v).x();
+    color_of[v.idx()] = {{static_cast<unsigned char>(v.idx() % 256), 200, 7}};
+  }
+  const auto vindex = get(boost::vertex_index, b.mesh);
+  const auto xs = diffuv::transfer_vertex_values(b.mesh, images, boost::make_iterator_property_map(x_of.begin(), vindex), -1.);
+  const auto points = diffuv::transfer_vertex_values(b.mesh, images, b.mesh.points(), Point_3(0, 0, 0));
+  const auto colors = diffuv::transfer_vertex_values(b.mesh, images, boost::make_iterator_property_map(color_of.begin(), vindex),
+                                                     std::array<unsigned char, 3>{{0, 0, 0}});
+  for(auto v : vertices(a)) {
+    EXPECT_NEAR(xs[v.idx()], images[v.idx()].point.x(), 1e-9 * b.scale);
+    EXPECT_LT(std::sqrt(CGAL::squared_distance(points[v.idx()], images[v.idx()].point)), 1e-9 * b.scale);
+    // A vertex mapped onto a vertex of B takes its colour exactly.
+    EXPECT_EQ(colors[v.idx()], color_of[b.vertex_of[v.idx()].idx()]);
+    EXPECT_EQ(colors[v.idx()][1], 200);
+  }
+  // A point halfway along an edge of B: colour channels averaged and rounded.
+  const face_descriptor f = *faces(b.mesh).begin();
+  diffuv::Surface_point<Mesh, Point_3> mid;
+  mid.face = f;
+  mid.chart = 0;
+  mid.barycentric = {{0.5, 0.5, 0.}};
+  std::vector<std::array<unsigned char, 3>> two(num_vertices(b.mesh), {{0, 0, 0}});
+  const auto h = b.mesh.halfedge(f);
+  two[b.mesh.source(h).idx()] = {{10, 255, 0}};
+  two[b.mesh.target(h).idx()] = {{11, 0, 0}};
+  const auto mixed = diffuv::interpolate_at(b.mesh, mid, boost::make_iterator_property_map(two.begin(), vindex));
+  EXPECT_EQ(mixed[0], 11);  // 10.5 rounds away from zero
+  EXPECT_EQ(mixed[1], 128); // 127.5
+}
+
+// Labels given to a copy by nearest face are the original labels.
+TEST(Correspondence, NearestFaceLabelsOfAnExactCopy)
+{
+  const Mesh& a = cow();
+  const std::vector<int> labels = segment_labels(a);
+  const Moved_copy b = shuffled_moved_copy(a, 4, false);
+  EXPECT_EQ(diffuv::nearest_face_labels(a, labels, b.mesh), carry_labels(labels, b));
+}
+
+} // namespace
