@@ -176,4 +176,33 @@ TEST(Atlas, BorderVerticesHaveOneEntryPerChartAndCornersKeepSeams)
   EXPECT_EQ(get(chart_of, grid_vertex(n, n, n)), 1u);
 }
 
+// A uv triangle flat on one side (its three vertices on one line) contains
+// the points of its segment many times over; a proper triangle as near wins,
+// whichever is met first, so the answer does not depend on the numbering.
+TEST(Atlas, PointLocationPrefersAProperTriangleToAFlatOne)
+{
+  for(bool flat_first : {true, false}) {
+    Mesh m;
+    const auto a = m.add_vertex(Point_3(0, 0, 0)), b = m.add_vertex(Point_3(1, -0.5, 0)),
+               c = m.add_vertex(Point_3(2, 0, 0)), d = m.add_vertex(Point_3(1, 1, 0));
+    Mesh::Face_index flat, proper;
+    if(flat_first) {
+      flat = m.add_face(a, b, c);
+      proper = m.add_face(a, c, d);
+    } else {
+      proper = m.add_face(a, c, d);
+      flat = m.add_face(a, b, c);
+    }
+    ASSERT_TRUE(flat.is_valid() && proper.is_valid());
+    Atlas atlas(m);
+    atlas.add_chart({flat, proper}, {a, b, c, d}, {Point_2(0, 0), Point_2(0.5, 0), Point_2(1, 0), Point_2(0.5, 1)});
+    const auto loc = atlas.locate(0, Point_2(0.25, 0));
+    EXPECT_EQ(loc.location.first, proper) << (flat_first ? "flat face added first" : "proper face added first");
+    EXPECT_TRUE(loc.inside);
+    const auto p = atlas.point(loc);
+    EXPECT_NEAR(p.x(), 0.5, 1e-12);
+    EXPECT_NEAR(p.y(), 0., 1e-12);
+  }
+}
+
 } // namespace

@@ -24,6 +24,9 @@ void add_render_command(CLI::App& app);
 /// Registers `diffuv compare`.
 void add_compare_command(CLI::App& app);
 
+/// Registers `diffuv correspond`.
+void add_correspond_command(CLI::App& app);
+
 /// Registers `diffuv segment`.
 void add_segment_command(CLI::App& app);
 

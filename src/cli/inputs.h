@@ -4,6 +4,7 @@
 #define DIFFUV_CLI_INPUTS_H
 
 #include <diffuv/error.h>
+#include <diffuv/graph/distance_tags.h>
 #include <diffuv/io/labels.h>
 #include <diffuv/io/read_mesh.h>
 #include <diffuv/patches/disc_patches.h>
@@ -61,6 +62,15 @@ inline void add_patch_options(CLI::App* cmd, Patch_cli_options& o)
                 "Keep caps (patches with one neighbour all around, like a hand or an ear) whole instead of splitting "
                 "them in two");
   cmd->add_flag("--strict", o.strict, "Report a region that is not a disc instead of cutting it into discs");
+}
+
+/// Runs `f` with the distance tag named by --distance (graph, exact, else fmm).
+template <class F>
+auto with_distance(const std::string& name, F f)
+{
+  if(name == "graph") return f(diffuv::Graph_distance_tag());
+  if(name == "exact") return f(diffuv::Exact_distance_tag());
+  return f(diffuv::Fmm_distance_tag());
 }
 
 /// Checks an output folder option: an empty name is a usage error.

@@ -86,15 +86,6 @@ struct Parameterization {
   double milliseconds = 0;
 };
 
-// Runs `f` with the distance tag named by --distance.
-template <class F>
-auto with_distance(const std::string& name, F f)
-{
-  if(name == "graph") return f(diffuv::Graph_distance_tag());
-  if(name == "exact") return f(diffuv::Exact_distance_tag());
-  return f(diffuv::Fmm_distance_tag());
-}
-
 bool is_corner_problem(diffuv::Status_code code)
 {
   switch(code) {

@@ -250,14 +250,18 @@ public:
   /// Vertices are visited by increasing distance to `q` from the kd-tree and
   /// their faces tested; the walk stops once no unvisited face can be nearer
   /// than the best one (a face's vertices are within the longest uv edge of any
-  /// of its points), so the answer is exact, and usually found in the first star.
+  /// of its points), so the answer is exact. A q held by a triangle of the
+  /// first star that has one is returned from that star (on a fold: the sheet
+  /// whose vertex is nearest in uv); within it, the positively oriented
+  /// triangle of largest uv area wins, so that q on an edge or at a vertex, or
+  /// in a triangle flat in uv, does not depend on the numbering.
   /// \throws std::out_of_range if there is no chart `c`
   Uv_location<TriangleMesh> locate(std::size_t c, const Point_2& q) const
   {
     const Chart& chart = this->chart(c);
     Incremental_search search(*chart.tree, q, 0., true, Distance(Local_uv_map{chart.uv.data()}));
     double best = std::numeric_limits<double>::infinity();
-    bool best_flat = true;
+    double best_area = 0.;  // signed uv area of the best triangle
     std::size_t best_face = 0;
     std::array<double, 3> best_bary{1., 0., 0.};
     std::vector<Local_index> tested;
@@ -270,19 +274,27 @@ public:
         if(std::find(tested.begin(), tested.end(), f) != tested.end()) continue;
         tested.push_back(f);
         std::array<double, 3> bary;
-        bool flat = false;
-        const double d = distance_to_triangle(chart, f, q, bary, flat);
-        // A flat uv triangle (three vertices on one side) contains the points
-        // of its segment many times over: any other triangle as near is better,
-        // so that the answer does not depend on which one is met first.
-        if(d < best || (d == best && best_flat && !flat)) {
+        double area = 0.;
+        const double d = distance_to_triangle(chart, f, q, bary, area);
+        // Several triangles of a star can hold q: those around an edge or a
+        // vertex it is on, a triangle flat in uv (its three vertices on one
+        // side), a folded one. The choice must not depend on which is met
+        // first (the numbering): nearest, then positively oriented, then the
+        // largest uv area.
+        if(d < best || (d == best && (area > 0.) > (best_area > 0.)) ||
+           (d == best && (area > 0.) == (best_area > 0.) && std::abs(area) > std::abs(best_area))) {
           best = d;
-          best_flat = flat;
+          best_area = area;
           best_face = f;
           best_bary = bary;
-          if(d == 0. && !flat) return make_location(chart, best_face, best_bary, true, 0.);
         }
       }
+      // Found in the star of the nearest vertex that has one: the sheet of a
+      // fold nearest to q in uv, which for q at a vertex's (u,v) is that vertex.
+      // "Found" allows a rounding error: a vertex on a fold does not have its
+      // whole neighbourhood in its star, and q computed on another mesh may
+      // miss it by 1e-14 (then another sheet would hold q exactly).
+      if(best <= 1e-12) return make_location(chart, best_face, best_bary, true, best);
     }
     return make_location(chart, best_face, best_bary, best == 0., best);
   }
@@ -317,7 +329,7 @@ private:
   // coordinates of the nearest point. Degenerate uv triangles are only reached
   // through their edges.
   static double distance_to_triangle(const Chart& chart, std::size_t f, const Point_2& q, std::array<double, 3>& bary,
-                                     bool& flat)
+                                     double& signed_area)
   {
     const auto& t = chart.triangles[f];
     const double ax = chart.uv[t[0]].x(), ay = chart.uv[t[0]].y();
@@ -325,7 +337,7 @@ private:
     const double cx = chart.uv[t[2]].x(), cy = chart.uv[t[2]].y();
     const double qx = q.x(), qy = q.y();
     const double area = (bx - ax) * (cy - ay) - (cx - ax) * (by - ay);
-    flat = area == 0.;
+    signed_area = area;
     if(area != 0.) {
       const double l0 = ((bx - qx) * (cy - qy) - (cx - qx) * (by - qy)) / area;
       const double l1 = ((cx - qx) * (ay - qy) - (ax - qx) * (cy - qy)) / area;

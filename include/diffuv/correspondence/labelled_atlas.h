@@ -27,10 +27,30 @@ namespace diffuv {
 
 /// Options of `build_labelled_atlas()`.
 struct Labelled_atlas_options {
+  static Repair_options no_repair()
+  {
+    Repair_options r;
+    r.enabled = false;
+    return r;
+  }
+
   bool clean = true;                  ///< clean the labels first (`clean_labels()`)
   Label_cleaning_options cleaning;
   Patching_options patching;          ///< cut of non-disc regions, split of caps
-  Repair_options repair;              ///< fold repair of each chart
+  /// Move corners onto ear tips so that no triangle is flat (`region_sides()`):
+  /// off here. A move can take a corner half a side away, and two
+  /// tessellations have their ears in different places, so the corners (and
+  /// the whole chart) would no longer agree; a flat triangle only makes point
+  /// location pick its neighbour.
+  bool move_corners_off_ears = false;
+  /// Fold repair of each chart: off by default here. Correspondence locates
+  /// points by their (u,v), and the raw diffusion coordinates are the same
+  /// smooth functions of the surface on any tessellation, where a repaired
+  /// chart is re-solved wherever that tessellation folded, differently on
+  /// each mesh: measured, the raw charts map 1.3-1.5x closer to the truth
+  /// (doc/correspondence.md). Point location stays well defined on a fold (it
+  /// picks one sheet by a rule that does not depend on the numbering).
+  Repair_options repair = no_repair();
 };
 
 /// A mesh with region labels, cut into disc patches, each patch a chart.
@@ -113,7 +133,7 @@ Status build_labelled_atlas(const TriangleMesh& tm, VertexPointMap vpm, std::vec
     }
   }
   out.patches = parameterize_patches(tm, out.segmentation, vpm, out.atlas, distance, Fibonacci_heap_tag(),
-                                     options.repair, follow ? &names : nullptr);
+                                     options.repair, follow ? &names : nullptr, options.move_corners_off_ears);
   return Status();
 }
 

@@ -43,6 +43,7 @@ struct Patch_result {
 /// others are still mapped.
 ///
 /// \param corner_names if given, #P entries: corners to follow (see `region_sides()`)
+/// \param move_corners_off_ears see `region_sides()`
 /// \returns #P results, one per patch
 template <class TriangleMesh, class VertexPointMap, class DistanceTag = Default_distance_tag,
           class HeapTag = Fibonacci_heap_tag>
@@ -51,7 +52,8 @@ std::vector<Patch_result<TriangleMesh>> parameterize_patches(const TriangleMesh&
                                                              VertexPointMap vpm, Uv_atlas<TriangleMesh>& atlas,
                                                              DistanceTag = DistanceTag(), HeapTag = HeapTag(),
                                                              const Repair_options& repair = Repair_options(),
-                                                             const std::vector<Corner_names>* corner_names = nullptr)
+                                                             const std::vector<Corner_names>* corner_names = nullptr,
+                                                             bool move_corners_off_ears = true)
 {
   using Patch = CGAL::Face_filtered_graph<TriangleMesh>;
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
@@ -65,7 +67,8 @@ std::vector<Patch_result<TriangleMesh>> parameterize_patches(const TriangleMesh&
     r.status = check_patch_disc(tm, seg, p);
     if(r.status)
       r.status = region_sides(tm, seg, p, vpm, r.sides, &r.side_report,
-                              corner_names && p < corner_names->size() ? &(*corner_names)[p] : nullptr);
+                              corner_names && p < corner_names->size() ? &(*corner_names)[p] : nullptr,
+                              move_corners_off_ears);
     if(!r.status) continue;
 
     const Patch patch(tm, seg.patch_faces[p]);

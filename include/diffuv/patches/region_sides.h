@@ -80,12 +80,16 @@ struct Side_report {
 /// (painted, transferred) then still get the same corners, where the rule's
 /// choices among nearly equal run lengths could differ.
 ///
+/// With `move_off_ears` (default), a corner may then move onto the tip of an
+/// ear so that no triangle is flat (`separate_flat_triangles()`); such a move
+/// can go half a side away, so correspondence turns it off on both meshes.
+///
 /// \pre patch `p` is a topological disc (`check_patch_disc()`)
 /// \returns `border_too_short` if the boundary has fewer than four vertices, else `ok`
 template <class TriangleMesh, class VertexPointMap>
 Status region_sides(const TriangleMesh& tm, const Segmentation<TriangleMesh>& seg, std::size_t p, VertexPointMap vpm,
                     Four_sides<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& sides,
-                    Side_report* report = nullptr, const Corner_names* names = nullptr)
+                    Side_report* report = nullptr, const Corner_names* names = nullptr, bool move_off_ears = true)
 {
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
   const auto loops = patch_loops(tm, seg, p, vpm);
@@ -192,6 +196,24 @@ Status region_sides(const TriangleMesh& tm, const Segmentation<TriangleMesh>& se
     }
     return count == 1 ? found : n;
   };
+  // A junction X -> Y that is not here exactly, but with short runs of other
+  // regions between the end of a run of X and the start of a run of Y (a
+  // corner of a third region that reaches the border on this mesh only): the
+  // vertex halfway between them, if there is exactly one such place.
+  auto find_name_loosely = [&](const Corner_name& name) {
+    if(name.middle) return n;
+    std::size_t found = n, count = 0;
+    for(std::size_t i = 0; i < n; ++i) {
+      if(loop.neighbour[(i + n - 1) % n] == loop.neighbour[i] || region_of((i + n - 1) % n) != name.before) continue;
+      std::size_t k = i;
+      while(region_of(k) != name.after && region_of(k) != name.before && (k + 1) % n != i) k = (k + 1) % n;
+      if(region_of(k) != name.after || k == i || arc(i, k) > 0.1 * at[n]) continue;
+      const std::size_t m = middle(i, k);
+      found = m == n ? i : m;
+      ++count;
+    }
+    return count == 1 ? found : n;
+  };
   bool names_unique = !r.equal_arcs;
   for(std::size_t c = 0; c < 4 && names_unique; ++c) names_unique = find_name(name_at(corners[c])) == corners[c];
 
@@ -201,6 +223,7 @@ Status region_sides(const TriangleMesh& tm, const Segmentation<TriangleMesh>& se
     bool ok = true;
     for(std::size_t c = 0; c < 4 && ok; ++c) {
       at_name[c] = find_name(names->corners[c]);
+      if(at_name[c] == n) at_name[c] = find_name_loosely(names->corners[c]);
       ok = at_name[c] != n;
     }
     // Counter-clockwise and distinct: offsets from corner 0 strictly increase.
@@ -225,7 +248,8 @@ Status region_sides(const TriangleMesh& tm, const Segmentation<TriangleMesh>& se
   const auto fim = get(boost::face_index, tm);
   std::array<std::size_t, 4> corner_at = {corners[0], corners[1], corners[2], corners[3]};
   const std::size_t sharp_index = static_cast<std::size_t>(std::find(corners.begin(), corners.end(), sharpest) - corners.begin());
-  r.moved = separate_flat_triangles(tm, loop.vertices, corner_at, [&](auto f) { return seg.face_patch[get(fim, f)] == p; },
+  if(move_off_ears)
+    r.moved = separate_flat_triangles(tm, loop.vertices, corner_at, [&](auto f) { return seg.face_patch[get(fim, f)] == p; },
                                     loop.length);
   corners.assign(corner_at.begin(), corner_at.end());
 

@@ -1,0 +1,320 @@
+// diffuv tool: `diffuv correspond` — every vertex of mesh A mapped onto mesh B
+// through (region, u, v), and B's colours (or any per-vertex values) carried to A.
+#include "commands.h"
+#include "inputs.h"
+
+#include <diffuv/correspondence/correspondence.h>
+#include <diffuv/correspondence/labelled_atlas.h>
+#include <diffuv/correspondence/nearest_face_labels.h>
+#include <diffuv/correspondence/transfer.h>
+#include <diffuv/io/atomic_file.h>
+#include <diffuv/io/number_format.h>
+#include <diffuv/io/vertex_colors.h>
+
+#include <CGAL/Polygon_mesh_processing/bbox.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <iostream>
+#include <limits>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace diffuv_cli {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+using Atlas = diffuv::Labelled_atlas<Mesh>;
+using Correspondence = diffuv::Atlas_correspondence<Mesh, Mesh>;
+using Image = Correspondence::Point;
+
+struct Correspond_options {
+  std::string mesh_a, mesh_b;
+  std::string labels_a, labels_b;
+  std::string values;
+  std::string output = "diffuv-out";
+  std::string distance = "fmm";
+  bool transfer_labels = false;
+  bool repair = false;
+  bool no_clean = false;
+  bool no_split_caps = false;
+};
+
+double ms_since(Clock::time_point start)
+{
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+std::string no_labels_message(const std::string& option, bool other_has_labels)
+{
+  std::string m = "the mesh has no region labels, and a correspondence needs the same regions on both meshes. "
+                  "Give " + option + " FILE (one integer per face, in file order), or paint the regions as face "
+                  "colours in a PLY/OFF file";
+  if(option == "--labels-b" && other_has_labels)
+    m += ", or pass --transfer-labels to give B the label of A's nearest face (when B lies on top of A)";
+  else
+    m += "; `diffuv segment A` writes a label file to start from (then paint B the same, or use "
+         "--transfer-labels when B lies on top of A)";
+  return m;
+}
+
+// Per-vertex rows of numbers (one row per vertex of B): what --values transfers.
+std::vector<std::vector<double>> read_value_rows(const std::string& path, std::size_t expected_rows)
+{
+  std::ifstream in(path);
+  if(!in) throw diffuv::Input_error(path, 0, "cannot open file");
+  std::vector<std::vector<double>> rows;
+  std::string line;
+  std::size_t line_number = 0, columns = 0;
+  while(std::getline(in, line)) {
+    ++line_number;
+    const auto hash = line.find('#');
+    if(hash != std::string::npos) line.erase(hash);
+    std::istringstream fields(line);
+    std::vector<double> row;
+    std::string token;
+    while(fields >> token) {
+      double value = 0;
+      if(!diffuv::internal::parse_number(token, value) || !std::isfinite(value))
+        throw diffuv::Input_error(path, line_number, "\"" + token + "\" is not a finite number");
+      row.push_back(value);
+    }
+    if(row.empty()) continue;
+    if(rows.empty()) columns = row.size();
+    if(row.size() != columns)
+      throw diffuv::Input_error(path, line_number, "this row has " + std::to_string(row.size()) +
+                                                       " values, the first row has " + std::to_string(columns));
+    rows.push_back(std::move(row));
+  }
+  if(rows.size() != expected_rows)
+    throw diffuv::Input_error(path, 0, "the file has " + std::to_string(rows.size()) + " rows, mesh B has " +
+                                           std::to_string(expected_rows) + " vertices (one row per vertex)");
+  return rows;
+}
+
+// A smooth colour field on B: its position in its bounding box, as red, green, blue.
+std::vector<diffuv::Rgb> position_colors(const Mesh& mesh)
+{
+  const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(mesh);
+  std::vector<diffuv::Rgb> colors;
+  for(auto v : vertices(mesh)) {
+    const auto& p = mesh.point(v);
+    diffuv::Rgb c;
+    for(int k = 0; k < 3; ++k) {
+      const double extent = box.max(k) - box.min(k);
+      const double t = extent > 0 ? (p[k] - box.min(k)) / extent : 0.5;
+      c[static_cast<std::size_t>(k)] = static_cast<unsigned char>(std::lround(30 + 210 * std::clamp(t, 0., 1.)));
+    }
+    colors.push_back(c);
+  }
+  return colors;
+}
+
+std::string label_list(const std::vector<int>& labels)
+{
+  std::string s;
+  for(std::size_t i = 0; i < labels.size() && i < 12; ++i) s += (i ? ", " : "") + std::to_string(labels[i]);
+  if(labels.size() > 12) s += ", ... (" + std::to_string(labels.size()) + " in all)";
+  return s;
+}
+
+std::string cleaning_text(const diffuv::Label_cleaning_report& r)
+{
+  if(r.empty()) return "labels clean";
+  return std::to_string(r.changed_faces()) + " faces relabelled (" + std::to_string(r.islands) + " islands, " +
+         std::to_string(r.smoothed_faces) + " by border smoothing, " + std::to_string(r.pinches) + " pinches)";
+}
+
+void run_correspond(const Correspond_options& o)
+{
+  const auto start = Clock::now();
+  Patch_cli_options pa, pb;
+  pa.labels = o.labels_a;
+  pb.labels = o.labels_b;
+  const Input_mesh a = read_input(o.mesh_a, pa);
+  Input_mesh b = read_input(o.mesh_b, pb);
+  if(a.face_labels.empty())
+    throw diffuv::Input_error(a.path, 0, no_labels_message("--labels-a", !b.face_labels.empty()));
+  if(b.face_labels.empty()) {
+    if(!o.transfer_labels) throw diffuv::Input_error(b.path, 0, no_labels_message("--labels-b", true));
+    b.face_labels = diffuv::nearest_face_labels(a.mesh, a.face_labels, b.mesh);
+    b.label_source = "labels of A's nearest faces (--transfer-labels)";
+  }
+  std::vector<diffuv::Rgb> b_colors = diffuv::read_vertex_colors(b.path);
+  std::vector<std::vector<double>> value_rows;
+  if(!o.values.empty()) value_rows = read_value_rows(o.values, num_vertices(b.mesh));
+  const double read_ms = ms_since(start);
+
+  diffuv::Labelled_atlas_options options;
+  options.clean = !o.no_clean;
+  options.repair.enabled = o.repair;
+  options.patching.split_caps = !o.no_split_caps;
+  Atlas atlas_a(a.mesh), atlas_b(b.mesh);
+  auto t = Clock::now();
+  with_distance(o.distance, [&](auto tag) {
+    return diffuv::build_labelled_atlas(a.mesh, a.mesh.points(), a.face_labels, atlas_a, options, tag);
+  });
+  const double param_a_ms = ms_since(t);
+  t = Clock::now();
+  // B takes its corners at the same junctions of regions as A (by name).
+  const auto corners_of_a = diffuv::corner_names_by_key(atlas_a);
+  with_distance(o.distance, [&](auto tag) {
+    return diffuv::build_labelled_atlas(b.mesh, b.mesh.points(), b.face_labels, atlas_b, options, tag, &corners_of_a);
+  });
+  const double param_b_ms = ms_since(t);
+
+  t = Clock::now();
+  const Correspondence correspondence(atlas_a, atlas_b);
+  const std::vector<Image> images = correspondence.map_vertices();
+  const double map_ms = ms_since(t);
+  const diffuv::Region_match_report& match = correspondence.report();
+  if(match.matched_patches == 0)
+    throw diffuv::Input_error(b.labels_path.empty() ? b.path : b.labels_path, 0,
+                              "no region of A matches a region of B (labels of A: " +
+                                  label_list(atlas_a.segmentation.patch_label) + "; of B: " +
+                                  label_list(atlas_b.segmentation.patch_label) + ")");
+
+  // Outputs: all or nothing.
+  t = Clock::now();
+  const bool b_painted = !b_colors.empty();
+  if(!b_painted) b_colors = position_colors(b.mesh);
+  const std::vector<diffuv::Rgb> a_colors = diffuv::transfer_vertex_values(
+      b.mesh, images, boost::make_iterator_property_map(b_colors.begin(), get(boost::vertex_index, b.mesh)),
+      diffuv::Rgb{{128, 128, 128}});
+
+  std::vector<std::string> inputs = {a.path, b.path, o.labels_a, o.labels_b, o.values};
+  diffuv::Output_folder out(o.output, inputs);
+  std::ostream& csv = out.open("correspondence.csv");
+  csv << "vertex,face,b0,b1,b2,x,y,z\n";
+  std::size_t mapped = 0, inside = 0;
+  for(auto v : vertices(a.mesh)) {
+    const Image& p = images[v.idx()];
+    csv << v.idx() << ',';
+    if(!p.mapped()) {
+      csv << "-1,,,,,,\n";
+      continue;
+    }
+    ++mapped;
+    if(p.inside) ++inside;
+    // The file lists a triangle's vertices from target(halfedge(f)) on (checked by a test).
+    const double w[3] = {p.barycentric[1] + 0., p.barycentric[2] + 0., p.barycentric[0] + 0.}; // + 0.: no "-0"
+    csv << b.report.file_face[p.face.idx()];
+    for(double x : w) {
+      csv << ',';
+      diffuv::internal::write_shortest(csv, x);
+    }
+    for(int k = 0; k < 3; ++k) {
+      csv << ',';
+      diffuv::internal::write_shortest(csv, p.point[k]);
+    }
+    csv << '\n';
+  }
+  std::ostream& transfer = out.open("transfer.ply");
+  diffuv::write_vertex_colored_ply(transfer, a.mesh, a.mesh.points(), a_colors, out.paths().back());
+  std::ostream& reference = out.open("reference.ply");
+  diffuv::write_vertex_colored_ply(reference, b.mesh, b.mesh.points(), b_colors, out.paths().back());
+  if(!value_rows.empty()) {
+    std::ostream& values = out.open("values.txt");
+    values << "# one row per vertex of A: B's rows from " << o.values << " interpolated; nan: not mapped\n";
+    for(const Image& p : images) {
+      const std::size_t columns = value_rows.front().size();
+      for(std::size_t c = 0; c < columns; ++c) {
+        if(c) values << ' ';
+        if(!p.mapped()) {
+          values << "nan";
+          continue;
+        }
+        const auto h = halfedge(p.face, b.mesh);
+        const double x = p.barycentric[0] * value_rows[source(h, b.mesh).idx()][c] +
+                         p.barycentric[1] * value_rows[target(h, b.mesh).idx()][c] +
+                         p.barycentric[2] * value_rows[target(next(h, b.mesh), b.mesh).idx()][c];
+        diffuv::internal::write_shortest(values, x);
+      }
+      values << '\n';
+    }
+  }
+  out.commit();
+  const double write_ms = ms_since(t);
+
+  const std::size_t na = num_vertices(a.mesh);
+  std::cout << "diffuv correspond " << a.path << " -> " << b.path << "\n"
+            << "A: " << na << " vertices, " << atlas_a.segmentation.number_of_patches() << " patches ("
+            << a.label_source << "; " << cleaning_text(atlas_a.cleaning) << ")\n"
+            << "B: " << num_vertices(b.mesh) << " vertices, " << atlas_b.segmentation.number_of_patches()
+            << " patches (" << b.label_source << "; " << cleaning_text(atlas_b.cleaning) << ")\n"
+            << "regions matched: " << match.matched_labels.size() << " labels, " << match.matched_patches
+            << " patches\n";
+  if(!match.labels_only_in_a.empty())
+    std::cout << "labels only in A (not mapped): " << label_list(match.labels_only_in_a) << '\n';
+  if(!match.labels_only_in_b.empty())
+    std::cout << "labels only in B (nothing maps there): " << label_list(match.labels_only_in_b) << '\n';
+  auto pieces = [](const std::vector<std::pair<int, int>>& v) {
+    std::string s;
+    for(std::size_t i = 0; i < v.size() && i < 8; ++i)
+      s += (i ? ", " : "") + std::to_string(v[i].first) + (v[i].second ? "." + std::to_string(v[i].second) : "");
+    if(v.size() > 8) s += ", ...";
+    return s;
+  };
+  if(!match.unmatched_patches_a.empty())
+    std::cout << "patches of A without a counterpart (label.part): " << pieces(match.unmatched_patches_a) << '\n';
+  if(!match.unmatched_patches_b.empty())
+    std::cout << "patches of B without a counterpart (label.part): " << pieces(match.unmatched_patches_b) << '\n';
+  std::cout << "vertices mapped: " << mapped << " of " << na << " (" << inside << " inside a triangle of B's chart, "
+            << mapped - inside << " onto its nearest point)\n"
+            << "colours: " << (b_painted ? "B's vertex colours" : "B's position in its bounding box (B has no vertex colours)")
+            << (value_rows.empty() ? "" : "; values from " + o.values) << "\n"
+            << "time: read " << std::lround(read_ms) << " ms, parameterize A " << std::lround(param_a_ms)
+            << " ms, B " << std::lround(param_b_ms) << " ms, map " << std::lround(map_ms) << " ms, write "
+            << std::lround(write_ms) << " ms\nwrote";
+  for(const auto& p : out.paths()) std::cout << ' ' << p;
+  std::cout << '\n';
+}
+
+} // namespace
+
+void add_correspond_command(CLI::App& app)
+{
+  auto options = std::make_shared<Correspond_options>();
+  CLI::App* cmd = app.add_subcommand(
+      "correspond", "Map every vertex of mesh A onto mesh B through matching region labels and (u,v), and carry "
+                    "B's colours to A");
+  cmd->add_option("mesh_a", options->mesh_a, "Mesh A (OFF, OBJ, PLY, STL): its vertices are mapped")->required();
+  cmd->add_option("mesh_b", options->mesh_b, "Mesh B: where they land")->required();
+  cmd->add_option("--labels-a", options->labels_a,
+                  "Region label file of A: one integer per face (file order). Default: regions painted in A's "
+                  "PLY/OFF file (face colours or a label property)");
+  cmd->add_option("--labels-b", options->labels_b, "Region label file of B (the same labels name the same regions)");
+  cmd->add_flag("--transfer-labels", options->transfer_labels,
+                "If B has no labels, give each face of B the label of A's nearest face (only meaningful when B lies "
+                "on top of A, e.g. a remeshed copy)");
+  cmd->add_option("--values", options->values,
+                  "Text file with one row of numbers per vertex of B (scalars, colours, texture coordinates...): "
+                  "written for A's vertices, interpolated, to OUTPUT/values.txt");
+  cmd->add_option("-o,--output", options->output, "Output folder (created if needed)")
+      ->check(output_folder_check())
+      ->capture_default_str();
+  cmd->add_option("--distance", options->distance, "Distances diffused in each patch: fmm, graph or exact")
+      ->check(CLI::IsMember({"graph", "fmm", "exact"}))
+      ->capture_default_str();
+  cmd->add_flag("--repair", options->repair,
+                "Repair the folds of each patch map before mapping (default: the raw diffusion coordinates, which "
+                "measured closer to the truth for correspondence; see doc/correspondence.md)");
+  cmd->add_flag("--no-clean", options->no_clean,
+                "Use the labels as they are (default: islands absorbed, jagged borders smoothed, pinches undone; "
+                "see doc/correspondence.md)");
+  cmd->add_flag("--no-split-caps", options->no_split_caps, "Keep caps whole (on both meshes)");
+  cmd->footer("Writes OUTPUT/correspondence.csv (vertex,face,b0,b1,b2,x,y,z: one row per vertex of A in file order; "
+              "face indexes B's faces in file order, b0..b2 weight that face's vertices in the order the file lists "
+              "them, x,y,z is the point on B; face -1: not mapped), OUTPUT/transfer.ply (A with B's vertex colours, "
+              "or with B's position colours if B has none) and OUTPUT/reference.ply (B with those colours).\n"
+              "The two meshes may differ in tessellation, vertex order, position, scale and pose: only the labels "
+              "and each surface's own shape are used.\nExit codes: 0 ok, 1 bad input, 2 bad command line, "
+              "3 cannot write, 4 internal error.");
+  cmd->callback([options]() { run_correspond(*options); });
+}
+
+} // namespace diffuv_cli
