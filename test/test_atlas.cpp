@@ -196,12 +196,17 @@ TEST(Atlas, PointLocationPrefersAProperTriangleToAFlatOne)
     ASSERT_TRUE(flat.is_valid() && proper.is_valid());
     Atlas atlas(m);
     atlas.add_chart({flat, proper}, {a, b, c, d}, {Point_2(0, 0), Point_2(0.5, 0), Point_2(1, 0), Point_2(0.5, 1)});
-    const auto loc = atlas.locate(0, Point_2(0.25, 0));
+    // (0.2, 0): the nearest vertex is a, whose star holds both triangles.
+    const auto loc = atlas.locate(0, Point_2(0.2, 0));
     EXPECT_EQ(loc.location.first, proper) << (flat_first ? "flat face added first" : "proper face added first");
     EXPECT_TRUE(loc.inside);
     const auto p = atlas.point(loc);
-    EXPECT_NEAR(p.x(), 0.5, 1e-12);
+    EXPECT_NEAR(p.x(), 0.4, 1e-12);
     EXPECT_NEAR(p.y(), 0., 1e-12);
+    // (0.5, 0) is b's (u,v): b itself, although it also lies inside the flat
+    // triangle's edge ac and on the proper triangle's edge.
+    const auto at_b = atlas.point(atlas.locate(0, Point_2(0.5, 0)));
+    EXPECT_EQ(at_b, m.point(b)) << (flat_first ? "flat face added first" : "proper face added first");
   }
 }
 

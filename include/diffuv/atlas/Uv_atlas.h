@@ -347,9 +347,17 @@ private:
         return 0.;
       }
     }
-    // Outside: the nearest point is on one of the three edges.
+    // Outside, or a flat triangle: the nearest point is on one of the three
+    // edges. On a flat triangle a corner can also lie inside the opposite
+    // edge: q at a corner is that corner, not a point of that edge.
     double best = std::numeric_limits<double>::infinity();
     const double px[3] = {ax, bx, cx}, py[3] = {ay, by, cy};
+    for(int k = 0; k < 3; ++k)
+      if(px[k] == qx && py[k] == qy) {
+        bary = {0., 0., 0.};
+        bary[k] = 1.;
+        return 0.;
+      }
     for(int k = 0; k < 3; ++k) {
       const int k1 = (k + 1) % 3;
       const double ex = px[k1] - px[k], ey = py[k1] - py[k];
