@@ -2,6 +2,8 @@
 // errors, and that a failure writes nothing.
 #include "test_data.h"
 
+#include <diffuv/io/labels.h>
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -638,8 +640,35 @@ TEST_F(Correspond, LabelsInOneMeshOnlyAreReported)
   const Tool_run none = run("correspond " + a_ + ' ' + b + " --labels-a " + labels_a_ + " --labels-b " +
                             write_labels(disjoint, "disjoint.txt") + " -o " + path("none_out"));
   EXPECT_EQ(none.code, 1);
-  EXPECT_NE(none.err.find("no region of A matches a region of B"), std::string::npos) << none.err;
+  EXPECT_NE(none.err.find("no patch of A pairs with a patch of B"), std::string::npos) << none.err;
   EXPECT_FALSE(fs::exists(path("none_out")));
+}
+
+// Regions painted on both meshes: A as `diffuv segment` writes it (palette
+// colours and a label property), B painted with the same colours only (another
+// file, another numbering): the colours name the same regions.
+TEST_F(Correspond, PaintedRegionsPairByColour)
+{
+  std::ostringstream b;
+  b.precision(17);
+  b << "OFF\n" << nv_ << ' ' << b_faces_.size() << " 0\n";
+  for(std::size_t k = 0; k < nv_; ++k) b << b_points_[k][0] << ' ' << b_points_[k][1] << ' ' << b_points_[k][2] << '\n';
+  for(std::size_t k = 0; k < b_faces_.size(); ++k) {
+    const auto c = diffuv::label_color(b_labels_[k]);
+    b << "3 " << b_faces_[k][0] << ' ' << b_faces_[k][1] << ' ' << b_faces_[k][2] << ' ' << int(c[0]) << ' '
+      << int(c[1]) << ' ' << int(c[2]) << '\n';
+  }
+  const std::string painted_b = write("b_painted.off", b.str());
+  const Tool_run r = run("correspond " + path("seg") + "/a.patches.ply " + painted_b + " -o " + out_dir().string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("vertices mapped: " + std::to_string(nv_) + " of " + std::to_string(nv_)), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("labels only in"), std::string::npos) << r.out;
+  const auto rows = read_csv(out_dir() / "correspondence.csv");
+  ASSERT_EQ(rows.size(), nv_ + 1);
+  double worst = 0;
+  for(std::size_t i = 1; i < rows.size(); ++i)
+    for(int k = 0; k < 3; ++k) worst = std::max(worst, std::abs(std::stod(rows[i][5 + k]) - b_points_[copy_of_[i - 1]][k]));
+  EXPECT_LT(worst, 1e-9);
 }
 
 } // namespace

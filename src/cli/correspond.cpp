@@ -62,6 +62,11 @@ std::string no_labels_message(const std::string& option, bool other_has_labels)
   return m;
 }
 
+std::string count(std::size_t n, const std::string& one, const std::string& many)
+{
+  return std::to_string(n) + " " + (n == 1 ? one : many);
+}
+
 // Per-vertex rows of numbers (one row per vertex of B): what --values transfers.
 std::vector<std::vector<double>> read_value_rows(const std::string& path, std::size_t expected_rows)
 {
@@ -80,14 +85,14 @@ std::vector<std::vector<double>> read_value_rows(const std::string& path, std::s
     while(fields >> token) {
       double value = 0;
       if(!diffuv::internal::parse_number(token, value) || !std::isfinite(value))
-        throw diffuv::Input_error(path, line_number, "\"" + token + "\" is not a finite number");
+        throw diffuv::Input_error(path, line_number, "\"" + token + "\" is not a finite number (separate values by spaces)");
       row.push_back(value);
     }
     if(row.empty()) continue;
     if(rows.empty()) columns = row.size();
     if(row.size() != columns)
-      throw diffuv::Input_error(path, line_number, "this row has " + std::to_string(row.size()) +
-                                                       " values, the first row has " + std::to_string(columns));
+      throw diffuv::Input_error(path, line_number, "this row has " + count(row.size(), "value", "values") +
+                                                       ", the first row has " + std::to_string(columns));
     rows.push_back(std::move(row));
   }
   if(rows.size() != expected_rows)
@@ -122,11 +127,24 @@ std::string label_list(const std::vector<int>& labels)
   return s;
 }
 
-std::string cleaning_text(const diffuv::Label_cleaning_report& r)
+std::string cleaning_text(const diffuv::Label_cleaning_report& r, bool cleaned)
 {
+  if(!cleaned) return "labels not cleaned (--no-clean)";
   if(r.empty()) return "labels clean";
-  return std::to_string(r.changed_faces()) + " faces relabelled (" + std::to_string(r.islands) + " islands, " +
-         std::to_string(r.smoothed_faces) + " by border smoothing, " + std::to_string(r.pinches) + " pinches)";
+  return count(r.changed_faces(), "face", "faces") + " relabelled (" + count(r.islands, "island", "islands") + ", " +
+         std::to_string(r.smoothed_faces) + " by border smoothing, " + count(r.pinches, "pinch", "pinches") + ")";
+}
+
+// Why patches have no chart: how many, and the first reason.
+std::string unmapped_text(const Atlas& atlas)
+{
+  std::size_t failed = 0;
+  std::string first;
+  for(std::size_t p = 0; p < atlas.patches.size(); ++p)
+    if(!atlas.patches[p].status) {
+      if(failed++ == 0) first = atlas.patches[p].status.what();
+    }
+  return failed == 0 ? std::string() : count(failed, "patch", "patches") + " could not be mapped (" + first + ")";
 }
 
 void run_correspond(const Correspond_options& o)
@@ -135,8 +153,13 @@ void run_correspond(const Correspond_options& o)
   Patch_cli_options pa, pb;
   pa.labels = o.labels_a;
   pb.labels = o.labels_b;
-  const Input_mesh a = read_input(o.mesh_a, pa);
-  Input_mesh b = read_input(o.mesh_b, pb);
+  // Colours are region names on both meshes: compare them by value. With
+  // --transfer-labels, B's colours are data to carry, not regions.
+  Paint_reading paint_a, paint_b;
+  paint_a.colour_values = paint_b.colour_values = true;
+  paint_b.read = !o.transfer_labels || !o.labels_b.empty();
+  const Input_mesh a = read_input(o.mesh_a, pa, paint_a);
+  Input_mesh b = read_input(o.mesh_b, pb, paint_b);
   if(a.face_labels.empty())
     throw diffuv::Input_error(a.path, 0, no_labels_message("--labels-a", !b.face_labels.empty()));
   if(b.face_labels.empty()) {
@@ -172,11 +195,16 @@ void run_correspond(const Correspond_options& o)
   const std::vector<Image> images = correspondence.map_vertices();
   const double map_ms = ms_since(t);
   const diffuv::Region_match_report& match = correspondence.report();
-  if(match.matched_patches == 0)
+  if(match.matched_patches == 0) {
+    std::string why;
+    const std::string failed_a = unmapped_text(atlas_a), failed_b = unmapped_text(atlas_b);
+    if(!failed_a.empty()) why += "; on A, " + failed_a;
+    if(!failed_b.empty()) why += "; on B, " + failed_b;
     throw diffuv::Input_error(b.labels_path.empty() ? b.path : b.labels_path, 0,
-                              "no region of A matches a region of B (labels of A: " +
+                              "no patch of A pairs with a patch of B (labels of A: " +
                                   label_list(atlas_a.segmentation.patch_label) + "; of B: " +
-                                  label_list(atlas_b.segmentation.patch_label) + ")");
+                                  label_list(atlas_b.segmentation.patch_label) + why + ")");
+  }
 
   // Outputs: all or nothing.
   t = Clock::now();
@@ -243,9 +271,9 @@ void run_correspond(const Correspond_options& o)
   const std::size_t na = num_vertices(a.mesh);
   std::cout << "diffuv correspond " << a.path << " -> " << b.path << "\n"
             << "A: " << na << " vertices, " << atlas_a.segmentation.number_of_patches() << " patches ("
-            << a.label_source << "; " << cleaning_text(atlas_a.cleaning) << ")\n"
+            << a.label_source << "; " << cleaning_text(atlas_a.cleaning, !o.no_clean) << ")\n"
             << "B: " << num_vertices(b.mesh) << " vertices, " << atlas_b.segmentation.number_of_patches()
-            << " patches (" << b.label_source << "; " << cleaning_text(atlas_b.cleaning) << ")\n"
+            << " patches (" << b.label_source << "; " << cleaning_text(atlas_b.cleaning, !o.no_clean) << ")\n"
             << "regions matched: " << match.matched_labels.size() << " labels, " << match.matched_patches
             << " patches\n";
   if(!match.labels_only_in_a.empty())
@@ -255,10 +283,18 @@ void run_correspond(const Correspond_options& o)
   auto pieces = [](const std::vector<std::pair<int, int>>& v) {
     std::string s;
     for(std::size_t i = 0; i < v.size() && i < 8; ++i)
-      s += (i ? ", " : "") + std::to_string(v[i].first) + (v[i].second ? "." + std::to_string(v[i].second) : "");
-    if(v.size() > 8) s += ", ...";
+      s += (i ? ", " : "") + std::to_string(v[i].first) + "." + std::to_string(v[i].second);
+    if(v.size() > 8) s += ", ... (" + std::to_string(v.size()) + " in all)";
     return s;
   };
+  if(!match.labels_with_different_pieces.empty())
+    std::cout << "warning: these labels are cut into a different number of patches on A and B, whose pieces pair by "
+                 "decreasing area (check them, or give each piece its own label): "
+              << label_list(match.labels_with_different_pieces) << '\n';
+  for(const auto& [name, atlas] : {std::make_pair("A", &atlas_a), std::make_pair("B", &atlas_b)}) {
+    const std::string failed = unmapped_text(*atlas);
+    if(!failed.empty()) std::cout << "on " << name << ", " << failed << '\n';
+  }
   if(!match.unmatched_patches_a.empty())
     std::cout << "patches of A without a counterpart (label.part): " << pieces(match.unmatched_patches_a) << '\n';
   if(!match.unmatched_patches_b.empty())

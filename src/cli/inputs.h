@@ -15,6 +15,7 @@
 #include <CLI/CLI.hpp>
 
 #include <cstdlib>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -79,9 +80,18 @@ inline CLI::Validator output_folder_check()
   return CLI::Validator([](const std::string& s) { return s.empty() ? "the output folder name is empty" : ""; }, "DIR");
 }
 
+/// How `read_input()` reads painted regions.
+struct Paint_reading {
+  bool read = true;            ///< false: ignore paint (the labels come from elsewhere)
+  /// A colour's label is its value (r * 65536 + g * 256 + b) rather than its
+  /// rank among the file's colours: two meshes painted with different sets of
+  /// colours still give one colour the same label (correspondence).
+  bool colour_values = false;
+};
+
 /// Reads the mesh and its regions: `--labels` first, else painted colours or
 /// integer face properties of the mesh file.
-inline Input_mesh read_input(const std::string& path, const Patch_cli_options& o)
+inline Input_mesh read_input(const std::string& path, const Patch_cli_options& o, Paint_reading paint = {})
 {
   Input_mesh in;
   in.path = path;
@@ -91,11 +101,24 @@ inline Input_mesh read_input(const std::string& path, const Patch_cli_options& o
     polygon_labels = diffuv::read_face_labels(o.labels, in.report.faces_in_file);
     in.label_source = "labels from " + o.labels;
     in.labels_path = o.labels;
-  } else {
+  } else if(paint.read) {
     diffuv::Painted_labels painted = diffuv::read_painted_labels(path);
     if(painted.source != diffuv::Label_source::none) {
       polygon_labels = std::move(painted.polygon_labels);
       in.label_source = "regions painted in the mesh file (" + painted.property + ")";
+      if(paint.colour_values && !painted.colors.empty()) {
+        // Colours of diffuv's palette (what `diffuv segment` paints) read back
+        // as their label number; any other painting labels a colour by its value.
+        std::map<diffuv::Rgb, int> palette;
+        for(int k = 0; k < 4096; ++k) palette.emplace(diffuv::label_color(k), k);
+        bool all_in_palette = true;
+        for(const diffuv::Rgb& c : painted.colors) all_in_palette = all_in_palette && palette.count(c) > 0;
+        for(int& label : polygon_labels) {
+          const diffuv::Rgb& c = painted.colors[static_cast<std::size_t>(label)];
+          label = all_in_palette ? palette[c] : (c[0] << 16) | (c[1] << 8) | c[2];
+        }
+        in.label_source += all_in_palette ? ", diffuv's palette" : ", a colour's label is its value";
+      }
     }
   }
   if(!polygon_labels.empty()) in.face_labels = diffuv::face_labels_of_mesh(polygon_labels, in.report);

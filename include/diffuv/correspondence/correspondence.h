@@ -58,6 +58,9 @@ struct Region_match_report {
   /// Patches (label, part) whose label is in both meshes but whose piece is not
   /// (the label was cut into different pieces, or a patch could not be mapped).
   std::vector<std::pair<int, int>> unmatched_patches_a, unmatched_patches_b;
+  /// Labels in both meshes cut into a different number of patches (pieces of
+  /// a label pair by decreasing area, which is then a guess: check them).
+  std::vector<int> labels_with_different_pieces;
 };
 
 /// Maps points of mesh A to mesh B through (region, u, v).
@@ -254,6 +257,15 @@ private:
         report_.unmatched_patches_b.emplace_back(std::get<0>(key_b[c]), std::get<1>(key_b[c]));
     for(const Key& k : unmapped_b)
       if(labels_a.count(std::get<0>(k))) report_.unmatched_patches_b.emplace_back(std::get<0>(k), std::get<1>(k));
+    std::map<int, std::size_t> pieces_a, pieces_b;
+    for(const Key& k : key_a_) ++pieces_a[std::get<0>(k)];
+    for(const Key& k : unmapped_a) ++pieces_a[std::get<0>(k)];
+    for(const Key& k : key_b) ++pieces_b[std::get<0>(k)];
+    for(const Key& k : unmapped_b) ++pieces_b[std::get<0>(k)];
+    for(const auto& [label, count] : pieces_a) {
+      const auto it = pieces_b.find(label);
+      if(it != pieces_b.end() && it->second != count) report_.labels_with_different_pieces.push_back(label);
+    }
     report_.matched_labels.assign(matched.begin(), matched.end());
     std::set_difference(labels_a.begin(), labels_a.end(), labels_b.begin(), labels_b.end(),
                         std::back_inserter(report_.labels_only_in_a));
