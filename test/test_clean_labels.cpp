@@ -24,24 +24,6 @@ using namespace diffuv_test;
 using vertex_descriptor = Mesh::Vertex_index;
 using face_descriptor = Mesh::Face_index;
 
-// A grid with vertex (i, j) at (xs[i], ys[j]), faces in make_grid's order:
-// cell (i, j) is faces 2 (j nx + i) (lower right triangle) and 2 (j nx + i) + 1.
-Mesh make_grid_at(const std::vector<double>& xs, const std::vector<double>& ys)
-{
-  Mesh m;
-  const std::size_t nx = xs.size() - 1, ny = ys.size() - 1;
-  std::vector<vertex_descriptor> v;
-  for(std::size_t j = 0; j <= ny; ++j)
-    for(std::size_t i = 0; i <= nx; ++i) v.push_back(m.add_vertex(Point_3(xs[i], ys[j], 0.)));
-  auto at = [&](std::size_t i, std::size_t j) { return v[j * (nx + 1) + i]; };
-  for(std::size_t j = 0; j < ny; ++j)
-    for(std::size_t i = 0; i < nx; ++i) {
-      m.add_face(at(i, j), at(i + 1, j), at(i + 1, j + 1));
-      m.add_face(at(i, j), at(i + 1, j + 1), at(i, j + 1));
-    }
-  return m;
-}
-
 // Labels of a grid of nx columns from a function of the cell (i, j).
 std::vector<int> cell_labels(std::size_t nx, std::size_t ny, const std::function<int(int, int)>& label)
 {
@@ -94,19 +76,24 @@ std::size_t pinched_pairs(const Mesh& m, const std::vector<int>& labels)
   return pinched;
 }
 
+// The other label of which face f has two or more edge-neighbours (an ear), or -1.
+int ear_label(const Mesh& m, const std::vector<int>& labels, face_descriptor f)
+{
+  std::map<int, int> other;
+  for(auto h : CGAL::halfedges_around_face(m.halfedge(f), m)) {
+    const face_descriptor g = m.face(m.opposite(h));
+    if(g != Mesh::null_face() && labels[g.idx()] != labels[f.idx()]) ++other[labels[g.idx()]];
+  }
+  for(const auto& [l, n] : other)
+    if(n >= 2) return l;
+  return -1;
+}
+
 // Faces with two or more edge-neighbours of one other label.
 std::size_t ear_faces(const Mesh& m, const std::vector<int>& labels)
 {
   std::size_t ears = 0;
-  for(face_descriptor f : faces(m)) {
-    std::map<int, int> other;
-    for(auto h : CGAL::halfedges_around_face(m.halfedge(f), m)) {
-      const face_descriptor g = m.face(m.opposite(h));
-      if(g != Mesh::null_face() && labels[g.idx()] != labels[f.idx()]) ++other[labels[g.idx()]];
-    }
-    for(const auto& [l, n] : other)
-      if(n >= 2) { ++ears; break; }
-  }
+  for(face_descriptor f : faces(m)) ears += ear_label(m, labels, f) >= 0;
   return ears;
 }
 
@@ -118,13 +105,11 @@ void remove_ears(const Mesh& m, std::vector<int>& labels)
   for(bool changed = true; changed;) {
     changed = false;
     for(face_descriptor f : faces(m)) {
-      std::map<int, int> other;
-      for(auto h : CGAL::halfedges_around_face(m.halfedge(f), m)) {
-        const face_descriptor g = m.face(m.opposite(h));
-        if(g != Mesh::null_face() && labels[g.idx()] != labels[f.idx()]) ++other[labels[g.idx()]];
+      const int l = ear_label(m, labels, f);
+      if(l >= 0) {
+        labels[f.idx()] = l;
+        changed = true;
       }
-      for(const auto& [l, n] : other)
-        if(n >= 2) { labels[f.idx()] = l; changed = true; break; }
     }
   }
 }

@@ -44,16 +44,17 @@ inline const Mesh& cgal_mesh(const std::string& name)
   return it->second;
 }
 
-/// A flat (nx by ny cells) grid of the unit square in the z = 0 plane, each cell
-/// cut into two counter-clockwise triangles (normals along +z). Vertex
-/// (i, j) has index j * (nx + 1) + i and lies at (i / nx, j / ny).
-inline Mesh make_grid(std::size_t nx, std::size_t ny)
+/// A flat grid in the z = 0 plane with vertex (i, j) at (xs[i], ys[j]), each
+/// cell cut into two counter-clockwise triangles (normals along +z). Vertex
+/// (i, j) has index j * nx + i with nx = xs.size(); cell (i, j) is faces
+/// 2 (j (nx - 1) + i) (lower right triangle) and 2 (j (nx - 1) + i) + 1.
+inline Mesh make_grid_at(const std::vector<double>& xs, const std::vector<double>& ys)
 {
   Mesh m;
+  const std::size_t nx = xs.size() - 1, ny = ys.size() - 1;
   std::vector<Mesh::Vertex_index> v;
   for(std::size_t j = 0; j <= ny; ++j)
-    for(std::size_t i = 0; i <= nx; ++i)
-      v.push_back(m.add_vertex(Point_3(double(i) / nx, double(j) / ny, 0.)));
+    for(std::size_t i = 0; i <= nx; ++i) v.push_back(m.add_vertex(Point_3(xs[i], ys[j], 0.)));
   auto at = [&](std::size_t i, std::size_t j) { return v[j * (nx + 1) + i]; };
   for(std::size_t j = 0; j < ny; ++j)
     for(std::size_t i = 0; i < nx; ++i) {
@@ -61,6 +62,16 @@ inline Mesh make_grid(std::size_t nx, std::size_t ny)
       m.add_face(at(i, j), at(i + 1, j + 1), at(i, j + 1));
     }
   return m;
+}
+
+/// A flat (nx by ny cells) grid of the unit square (`make_grid_at()`): vertex
+/// (i, j) has index j * (nx + 1) + i and lies at (i / nx, j / ny).
+inline Mesh make_grid(std::size_t nx, std::size_t ny)
+{
+  std::vector<double> xs(nx + 1), ys(ny + 1);
+  for(std::size_t i = 0; i <= nx; ++i) xs[i] = double(i) / nx;
+  for(std::size_t j = 0; j <= ny; ++j) ys[j] = double(j) / ny;
+  return make_grid_at(xs, ys);
 }
 
 /// Vertex (i, j) of a grid made by make_grid(nx, ...).
