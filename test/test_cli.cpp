@@ -582,6 +582,11 @@ TEST_F(Correspond, ColoursAndValuesAreCarriedToA)
 TEST_F(Correspond, MissingLabelsSayHowToProvideThem)
 {
   const std::string b = write_b(false);
+  // A command-line mistake points at the command's own help.
+  const Tool_run usage = run("correspond " + a_ + ' ' + b + " --bogus");
+  EXPECT_EQ(usage.code, 2);
+  EXPECT_NE(usage.err.find("(see diffuv correspond --help)"), std::string::npos) << usage.err;
+
   const Tool_run none = run("correspond " + a_ + ' ' + b + " -o " + out_dir().string());
   EXPECT_EQ(none.code, 1);
   EXPECT_NE(none.err.find("a.off: the mesh has no region labels"), std::string::npos) << none.err;

@@ -162,15 +162,18 @@ void run_correspond(const Correspond_options& o)
   Input_mesh b = read_input(o.mesh_b, pb, paint_b);
   if(a.face_labels.empty())
     throw diffuv::Input_error(a.path, 0, no_labels_message("--labels-a", !b.face_labels.empty()));
+  double transfer_ms = 0;
   if(b.face_labels.empty()) {
     if(!o.transfer_labels) throw diffuv::Input_error(b.path, 0, no_labels_message("--labels-b", true));
+    const auto t0 = Clock::now();
     b.face_labels = diffuv::nearest_face_labels(a.mesh, a.face_labels, b.mesh);
+    transfer_ms = ms_since(t0);
     b.label_source = "labels of A's nearest faces (--transfer-labels)";
   }
   std::vector<diffuv::Rgb> b_colors = diffuv::read_vertex_colors(b.path);
   std::vector<std::vector<double>> value_rows;
   if(!o.values.empty()) value_rows = read_value_rows(o.values, num_vertices(b.mesh));
-  const double read_ms = ms_since(start);
+  const double read_ms = ms_since(start) - transfer_ms;
 
   diffuv::Labelled_atlas_options options;
   options.clean = !o.no_clean;
@@ -303,7 +306,9 @@ void run_correspond(const Correspond_options& o)
             << mapped - inside << " onto its nearest point)\n"
             << "colours: " << (b_painted ? "B's vertex colours" : "B's position in its bounding box (B has no vertex colours)")
             << (value_rows.empty() ? "" : "; values from " + o.values) << "\n"
-            << "time: read " << std::lround(read_ms) << " ms, parameterize A " << std::lround(param_a_ms)
+            << "time: read " << std::lround(read_ms) << " ms, "
+            << (o.transfer_labels && transfer_ms > 0 ? "transfer labels " + std::to_string(std::lround(transfer_ms)) + " ms, " : "")
+            << "parameterize A " << std::lround(param_a_ms)
             << " ms, B " << std::lround(param_b_ms) << " ms, map " << std::lround(map_ms) << " ms, write "
             << std::lround(write_ms) << " ms\nwrote";
   for(const auto& p : out.paths()) std::cout << ' ' << p;

@@ -7,6 +7,7 @@
 #include <cstring>
 #include <exception>
 #include <iostream>
+#include <string>
 
 int main(int argc, char** argv)
 {
@@ -36,7 +37,9 @@ int main(int argc, char** argv)
   } catch(const CLI::Success& e) { // --help, --version
     return app.exit(e);
   } catch(const CLI::ParseError& e) {
-    std::cerr << "diffuv: error: " << e.what() << " (see diffuv --help)\n";
+    // Point at the help of the command that was given, if any.
+    const std::string help = argc > 1 && argv[1][0] != '-' ? std::string("diffuv ") + argv[1] + " --help" : "diffuv --help";
+    std::cerr << "diffuv: error: " << e.what() << " (see " << help << ")\n";
     return diffuv_cli::exit_usage;
   } catch(const diffuv::Input_error& e) {
     std::cerr << "diffuv: error: " << e.what() << '\n';
