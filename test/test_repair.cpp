@@ -264,34 +264,4 @@ TEST(FlatTriangles, AutomaticCornersPutACornerOnTheEarsTip)
   EXPECT_TRUE(diffuv::measure_distortion(m, faces(m), m.points(), atlas.vertex_uv_map()).injective());
 }
 
-// whole_patch: every interior vertex is re-solved even without folds (the
-// border stays), and the map is one-to-one.
-TEST(Repair, WholePatchReSolvesEveryInteriorVertex)
-{
-  const Mesh& m = diffuv_test::cgal_mesh("nefertiti.off");
-  diffuv::Uv_atlas<Mesh> raw(m), whole(m);
-  diffuv::Repair_options off, all;
-  off.enabled = false;
-  all.whole_patch = true;
-  diffuv::Repair_report report;
-  ASSERT_TRUE(diffuv::parameterize_disc(m, {}, raw, nullptr, diffuv::Fibonacci_heap_tag(), diffuv::Default_distance_tag(), off).ok());
-  ASSERT_TRUE(diffuv::parameterize_disc(m, {}, whole, nullptr, diffuv::Fibonacci_heap_tag(), diffuv::Default_distance_tag(), all, &report).ok());
-  EXPECT_TRUE(report.whole_patch);
-  std::size_t interior = 0, border_same = 0, border = 0;
-  for(auto v : vertices(m)) {
-    const auto p = get(raw.vertex_uv_map(), v), q = get(whole.vertex_uv_map(), v);
-    if(m.is_border(v)) {
-      ++border;
-      border_same += p == q;
-    } else {
-      ++interior;
-    }
-  }
-  EXPECT_EQ(border_same, border);  // nefertiti's sides are monotone: the border is kept
-  EXPECT_GT(report.moved_vertices, interior * 9 / 10);
-  const auto d = diffuv::measure_distortion(m, faces(m), m.points(), whole.vertex_uv_map());
-  EXPECT_EQ(d.flipped, 0u);
-  EXPECT_EQ(d.overlapping_pairs, 0u);
-}
-
 } // namespace

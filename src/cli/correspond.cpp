@@ -13,6 +13,8 @@
 
 #include <CGAL/Polygon_mesh_processing/bbox.h>
 
+#include <boost/property_map/function_property_map.hpp>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -259,11 +261,9 @@ void run_correspond(const Correspond_options& o)
           values << "nan";
           continue;
         }
-        const auto h = halfedge(p.face, b.mesh);
-        const double x = p.barycentric[0] * value_rows[source(h, b.mesh).idx()][c] +
-                         p.barycentric[1] * value_rows[target(h, b.mesh).idx()][c] +
-                         p.barycentric[2] * value_rows[target(next(h, b.mesh), b.mesh).idx()][c];
-        diffuv::internal::write_shortest(values, x);
+        const auto column = boost::make_function_property_map<Mesh::Vertex_index>(
+            [&](Mesh::Vertex_index v) { return value_rows[v.idx()][c]; });
+        diffuv::internal::write_shortest(values, diffuv::interpolate_at(b.mesh, p, column));
       }
       values << '\n';
     }

@@ -132,10 +132,8 @@ public:
   /// Unmapped if `v` is not in that chart or the chart has no counterpart.
   Point map_vertex(vertex_a v, std::size_t chart_a) const
   {
-    const auto e = a_.atlas.entries(v);
-    for(auto it = e.first; it != e.second; ++it)
-      if(it->chart == chart_a) return map_uv(chart_a, a_.atlas.uv(chart_a, it->local));
-    return Point();
+    const Point_2 uv = uv_in(v, chart_a);
+    return std::isnan(uv.x()) ? Point() : map_uv(chart_a, uv);
   }
 
   /// The image of the point of face `f` of A with barycentric coordinates
@@ -191,13 +189,8 @@ public:
   const Key& key_a(std::size_t c) const { return key_a_.at(c); }
 
 private:
-  Point_2 uv_in(vertex_a v, std::size_t c) const
-  {
-    const auto e = a_.atlas.entries(v);
-    for(auto it = e.first; it != e.second; ++it)
-      if(it->chart == c) return a_.atlas.uv(c, it->local);
-    return Point_2(0., 0.); // not reached: callers pass a chart of v
-  }
+  // The (u,v) of v in A's chart c; NaN if v is not in it.
+  Point_2 uv_in(vertex_a v, std::size_t c) const { return get(a_.atlas.chart_uv_map(c), v); }
 
   std::size_t canonical_chart(vertex_a v) const
   {

@@ -27,12 +27,6 @@ namespace diffuv {
 
 /// Options of `build_labelled_atlas()`.
 struct Labelled_atlas_options {
-  static Repair_options no_repair()
-  {
-    Repair_options r;
-    r.enabled = false;
-    return r;
-  }
 
   bool clean = true;                  ///< clean the labels first (`clean_labels()`)
   Label_cleaning_options cleaning;
@@ -50,7 +44,7 @@ struct Labelled_atlas_options {
   /// each mesh: measured, the raw charts map 1.3-1.5x closer to the truth
   /// (doc/correspondence.md). Point location stays well defined on a fold (it
   /// picks one sheet by a rule that does not depend on the numbering).
-  Repair_options repair = no_repair();
+  Repair_options repair{false};
 };
 
 /// A mesh with region labels, cut into disc patches, each patch a chart.

@@ -43,11 +43,6 @@ struct Repair_options {
   bool enabled = true;            ///< false keeps the raw diffusion coordinates (the paper's method)
   std::size_t initial_rings = 1;  ///< rings of vertices added around the first folds
   std::size_t max_local_rounds = 6;  ///< local re-solves (rings doubling) before the whole patch is re-solved
-  /// Re-solve every interior vertex even where nothing folds: the diffusion
-  /// coordinates then give the border, and the interior is the mean value map
-  /// inside it. What correspondence uses: the map no longer depends on where
-  /// each tessellation happened to fold (doc/correspondence.md).
-  bool whole_patch = false;
 };
 
 /// What `repair_folds()` did to one patch (all zero when the repair is off).
@@ -213,7 +208,7 @@ Status repair_folds(const TriangleMesh& tm, VertexPointMap vpm,
   // sides prove the map one-to-one, no overlap test needed.
   const bool border_ok = std::all_of(walks.begin(), walks.end(), monotone);
   r.folded_faces = find_defects();
-  if(r.folded_faces == 0 && border_ok && !options.whole_patch) return Status();
+  if(r.folded_faces == 0 && border_ok) return Status();
 
   // 1. A side that does not run monotonically is re-spaced by arc length.
   for(const Walk& w : walks) {
@@ -330,7 +325,7 @@ Status repair_folds(const TriangleMesh& tm, VertexPointMap vpm,
     to.push_back(i);
   };
   // Folds over a tenth of the patch are not local: go straight to step 3.
-  const std::size_t local_rounds = options.whole_patch || 10 * defects > p.triangle.size() ? 0 : options.max_local_rounds;
+  const std::size_t local_rounds = 10 * defects > p.triangle.size() ? 0 : options.max_local_rounds;
   for(std::size_t round = 0; defects > 0 && round < local_rounds; ++round, rings *= 2) {
     std::vector<std::size_t> front;
     for(std::size_t i = 0; i < n; ++i)
@@ -355,7 +350,7 @@ Status repair_folds(const TriangleMesh& tm, VertexPointMap vpm,
   }
 
   // 3. Last resort: every interior vertex.
-  if(defects > 0 || options.whole_patch) {
+  if(defects > 0) {
     r.whole_patch = true;
     std::vector<bool> interior(n);
     for(std::size_t i = 0; i < n; ++i) interior[i] = p.side_mask[i] == 0;
