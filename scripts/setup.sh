@@ -13,6 +13,7 @@ packages=(
   libcli11-dev                         # the diffuv command line
   libstb-dev                           # stb_image_write: PNG textures and renders
   python3                              # scripts/height_labels.py, and XML checks in tests
+  clang libclang-rt-dev                # libFuzzer targets (test/fuzz, scripts/fuzz.sh)
 )
 
 missing=()

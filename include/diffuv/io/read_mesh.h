@@ -41,13 +41,16 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
 #include <istream>
 #include <iterator>
 #include <limits>
 #include <map>
 #include <sstream>
+#include <tuple>
 #include <string>
 #include <system_error>
 #include <utility>
@@ -214,8 +217,8 @@ public:
   std::string rest_of_line()
   {
     std::string s;
-    for(int c = get(); c != std::char_traits<char>::eof() && c != '\n'; c = get())
-      s += static_cast<char>(c);
+    if(std::getline(in_, s) && !in_.eof())
+      ++line_; // the end of line was read
     return s;
   }
 
@@ -232,12 +235,67 @@ inline bool parse_count(const std::string& token, long long& value)
   return ec == std::errc() && end == last;
 }
 
+/// `value` as written in messages.
+inline std::string number_text_of(double value)
+{
+  std::ostringstream text;
+  text << std::setprecision(15) << value;
+  return text.str();
+}
+
+/// The numbers of an OFF line as CGAL's `File_scanner_OFF` reads them: up to
+/// a `#` comment, with `CGAL::IO::iformat()` (whose syntax differs from
+/// `operator>>`: "1e999" is infinite, "1-2" is one number).
+inline std::vector<double> cgal_off_numbers(std::string line)
+{
+  const std::size_t hash = line.find('#');
+  if(hash != std::string::npos)
+    line.erase(hash);
+  std::istringstream in(line);
+  std::vector<double> numbers;
+  double d;
+  while(in >> CGAL::IO::iformat(d))
+    numbers.push_back(d);
+  return numbers;
+}
+
+/// The numbers of an OFF line made of plain decimal numbers only (up to a `#`
+/// comment), on which `leading_numbers()` and `cgal_off_numbers()` agree,
+/// without their string streams; false if the line has anything else.
+inline bool plain_numbers(const std::string& line, std::vector<double>& numbers)
+{
+  numbers.clear();
+  const char* p = line.c_str();
+  const char* const end = p + line.size();
+  for(;;) {
+    while(p < end && std::isspace(static_cast<unsigned char>(*p)))
+      ++p;
+    if(p == end || *p == '#')
+      return true;
+    const char* const start = p;
+    for(; p < end && !std::isspace(static_cast<unsigned char>(*p)); ++p)
+      if(!std::isdigit(static_cast<unsigned char>(*p)) && *p != '.' && *p != '-' && *p != '+' && *p != 'e' && *p != 'E')
+        return false;
+    char* stop = nullptr;
+    const double d = std::strtod(start, &stop);
+    if(stop != p || !std::isfinite(d))
+      return false;
+    numbers.push_back(d);
+  }
+}
+
+/// True if CGAL's OFF header reader can double `edges` (an int) without overflow.
+inline bool edge_count_fits(long long edges)
+{
+  return edges >= std::numeric_limits<int>::min() / 2 && edges <= std::numeric_limits<int>::max() / 2;
+}
+
 /// Scans an OFF file like CGAL's `File_scanner_OFF`: header, then one vertex
 /// per line, then one face per line. With `header_only`, stops after the
 /// header, whose counts are checked against the size of the file: CGAL
 /// resizes its arrays to the announced counts before reading them, so a
 /// corrupt header would otherwise allocate gigabytes.
-/// n-dimensional OFF ("nOFF") is not scanned; binary OFF only for its header.
+/// Binary OFF has no lines: its data is only walked for what CGAL trusts.
 inline Text_mesh_scan scan_off(const std::string& path, std::uintmax_t file_size, bool header_only)
 {
   Text_mesh_scan scan;
@@ -255,26 +313,31 @@ inline Text_mesh_scan scan_off(const std::string& path, std::uintmax_t file_size
   const std::string keyword = in.token();
   // [ST][C][N][4][n]OFF, as CGAL accepts it
   std::size_t k = 0;
-  if(keyword.compare(k, 2, "ST") == 0) k += 2;
-  if(k < keyword.size() && keyword[k] == 'C') ++k;
-  if(k < keyword.size() && keyword[k] == 'N') ++k;
+  const bool texture = keyword.compare(k, 2, "ST") == 0;
+  if(texture) k += 2;
+  const bool colors = k < keyword.size() && keyword[k] == 'C';
+  if(colors) ++k;
+  const bool normals = k < keyword.size() && keyword[k] == 'N';
+  if(normals) ++k;
   const bool homogeneous = k < keyword.size() && keyword[k] == '4';
   if(homogeneous) ++k;
   const bool n_dimensional = k < keyword.size() && keyword[k] == 'n';
   if(n_dimensional) ++k;
   if(keyword.substr(k) != "OFF")
     return fail(header_line, "the file does not start with an OFF header");
-  if(n_dimensional)
-    return scan;
 
   long long nv = 0, nf = 0, ne = 0;
   in.skip_space_and_comments();
   std::size_t counts_line = in.line();
   std::string token = in.token();
   if(token == "BINARY") {
-    // Three big-endian 32-bit counts after the end of the line.
+    // Three big-endian 32-bit counts after the end of the line (after the
+    // dimension for nOFF, which CGAL's reader does not use: it reads three
+    // coordinates per vertex whatever the dimension).
     in.rest_of_line();
     unsigned char bytes[12];
+    if(n_dimensional && !file.read(reinterpret_cast<char*>(bytes), 4))
+      return fail(counts_line, "cannot read the dimension");
     if(!file.read(reinterpret_cast<char*>(bytes), 12))
       return fail(counts_line, "cannot read the numbers of vertices, faces and edges");
     auto read32 = [&](int i) {
@@ -284,16 +347,52 @@ inline Text_mesh_scan scan_off(const std::string& path, std::uintmax_t file_size
     };
     nv = read32(0);
     nf = read32(1);
+    ne = read32(2);
     if(nv < 0 || nf < 0)
       return fail(counts_line, "negative number of vertices or faces");
+    if(!edge_count_fits(ne))
+      return fail(counts_line, "the number of edges " + std::to_string(ne) + " is out of range");
     // At least three 4-byte floats per vertex, one 4-byte count per face.
     if(static_cast<std::uintmax_t>(nv) * 12 + static_cast<std::uintmax_t>(nf) * 4 > file_size)
       return fail(counts_line, "the header announces " + std::to_string(nv) + " vertices and " +
                                    std::to_string(nf) + " faces, more than the " + std::to_string(file_size) +
                                    " bytes of the file can hold");
-    return scan; // binary data has no lines to find
+    if(header_only)
+      return scan;
+    // Binary data has no lines to find; walk it as CGAL reads it for the
+    // face sizes, which CGAL allocates before reading the indices.
+    const std::size_t h = homogeneous ? 1 : 0;
+    const std::streamsize floats = static_cast<std::streamsize>(3 + h + (normals ? 3 + h : 0) + (texture ? 2 + h : 0));
+    auto next32 = [&](std::int32_t& value) {
+      if(!file.read(reinterpret_cast<char*>(bytes), 4))
+        return false;
+      value = static_cast<std::int32_t>(read32(0));
+      return true;
+    };
+    // CGAL's read_OFF() reads no colour in binary files (nor their counts).
+    if(!file.ignore(4 * floats * static_cast<std::streamsize>(nv)) || file.gcount() != 4 * floats * nv)
+      return scan; // CGAL stops in the vertices too
+    std::int32_t count = 0;
+    for(long long j = 0; j < nf; ++j) {
+      if(!next32(count)) // CGAL would allocate the face with the unread (uninitialised) size
+        return fail(0, "the file ends before face " + std::to_string(j) + " of " + std::to_string(nf));
+      if(count < 0 || static_cast<std::uintmax_t>(count) * 4 > file_size)
+        return fail(0, "face " + std::to_string(j) + " has " + std::to_string(count) + " vertices, " +
+                           (count < 0 ? "a negative number" : "more than the file can hold"));
+      if(!file.ignore(4 * static_cast<std::streamsize>(count)))
+        return scan;
+    }
+    return scan;
   }
 
+  if(n_dimensional) { // the dimension, then the counts
+    long long dimension = 0;
+    if(!parse_count(token, dimension))
+      return fail(counts_line, "cannot read the dimension");
+    in.skip_space_and_comments();
+    counts_line = in.line();
+    token = in.token();
+  }
   if(!parse_count(token, nv))
     return fail(counts_line, "cannot read the numbers of vertices, faces and edges");
   in.skip_space_and_comments();
@@ -306,6 +405,8 @@ inline Text_mesh_scan scan_off(const std::string& path, std::uintmax_t file_size
     return fail(counts_line, "cannot read the numbers of vertices, faces and edges");
   if(nv < 0 || nf < 0)
     return fail(counts_line, "negative number of vertices or faces");
+  if(!edge_count_fits(ne))
+    return fail(counts_line, "the number of edges " + std::to_string(ne) + " is out of range");
   // Each vertex line holds at least "x y z" and an end of line, each face
   // line at least its size and an end of line; the last line may have no end.
   const std::uintmax_t needed = static_cast<std::uintmax_t>(nv) * 6 + static_cast<std::uintmax_t>(nf) * 2;
@@ -316,14 +417,65 @@ inline Text_mesh_scan scan_off(const std::string& path, std::uintmax_t file_size
   if(header_only)
     return scan;
 
+  // What CGAL's File_scanner_OFF (CGAL 5.5) takes on trust, checked on the
+  // numbers as it reads them (cgal_off_numbers()): a vertex line long enough
+  // for its normal, texture coordinates and colour; colours of 1 (an index in
+  // CGAL's colour map), 3 or 4 components in range, on every vertex (face)
+  // after a coloured one; face sizes and indices it can convert. Else it
+  // reads past the end of its vector or converts out-of-range values. It
+  // reads texture coordinates at an uninitialised position unless the
+  // vertices are coloured too (STCOFF).
+  if(texture && !colors)
+    return fail(header_line, "texture coordinates without colours (STOFF) cannot be read");
+  const std::size_t h = homogeneous ? 1 : 0;
+  const std::size_t vertex_numbers = 3 + h + (normals ? 3 + h : 0) + (texture ? 2 + h : 0);
+  // The `n` colour components at `first` in `entries` (before texture
+  // coordinates, as Geomview writes them); "" if they are fine.
+  auto color_problem = [](const std::vector<double>& entries, std::size_t first, std::size_t n,
+                          bool& colored) -> std::string {
+    colored = colored || n > 0;
+    if(!colored)
+      return std::string();
+    if(n == 0)
+      return "has no colour, but an earlier one has";
+    if(n != 1 && n != 3 && n != 4)
+      return "has " + std::to_string(n) + " colour components; expected 3 or 4";
+    if(n == 1)
+      return entries[first] >= 0 && entries[first] < 149
+               ? std::string()
+               : "has colour-map index " + number_text_of(entries[first]) + ", outside [0, 148]";
+    bool integers = true;
+    for(std::size_t c = first; c < first + 3; ++c)
+      integers = integers && std::floor(entries[c]) == entries[c];
+    for(std::size_t c = first; c < first + 3; ++c)
+      if(!(entries[c] >= 0 && entries[c] <= (integers ? 255 : 1)))
+        return "has colour component " + number_text_of(entries[c]) + ", outside " +
+               (integers ? "[0, 255] (integers)" : "[0, 1]");
+    return std::string();
+  };
+  bool vertex_colored = false, face_colored = false;
+
   const std::size_t needed_coordinates = homogeneous ? 4 : 3;
   std::string stop;
+  std::vector<double> numbers, entries;
+  // The numbers of `text` read as the messages below describe them
+  // (operator>>), and as CGAL reads them.
+  auto read_numbers = [&](const std::string& text) {
+    if(plain_numbers(text, numbers)) {
+      entries = numbers;
+      stop.clear();
+    } else {
+      numbers = leading_numbers(text, stop);
+      entries = cgal_off_numbers(text);
+    }
+  };
   for(long long i = 0; i < nv; ++i) {
     if(!in.skip_space_and_comments())
       return fail(0, "the file ends before vertex " + std::to_string(i) + " of " + std::to_string(nv));
     const std::size_t line = in.line();
     scan.vertex_line.push_back(line);
-    const std::vector<double> numbers = leading_numbers(in.rest_of_line(), stop);
+    const std::string text = in.rest_of_line();
+    read_numbers(text);
     if(numbers.size() < needed_coordinates) {
       if(is_non_finite_number(stop)) {
         scan.error_line = line;
@@ -333,6 +485,23 @@ inline Text_mesh_scan scan_off(const std::string& path, std::uintmax_t file_size
       return fail(line, "vertex " + std::to_string(i) + " does not have " + std::to_string(needed_coordinates) +
                             " coordinates");
     }
+    if(entries.size() < needed_coordinates)
+      return fail(line, "vertex " + std::to_string(i) + " does not have " + std::to_string(needed_coordinates) +
+                            " coordinates");
+    if(homogeneous && entries[3] == 0) { // a point at infinity
+      scan.error_line = line;
+      scan.error = non_finite_message(static_cast<std::size_t>(i));
+      return scan;
+    }
+    if(entries.size() < vertex_numbers && (colors || normals))
+      return fail(line, "vertex " + std::to_string(i) + " has " + std::to_string(entries.size()) + " numbers; " +
+                            keyword + " needs " + std::to_string(vertex_numbers));
+    if(colors) {
+      const std::string problem = color_problem(entries, vertex_numbers - (texture ? 2 + h : 0),
+                                                entries.size() - vertex_numbers, vertex_colored);
+      if(!problem.empty())
+        return fail(line, "vertex " + std::to_string(i) + " " + problem);
+    }
   }
 
   for(long long j = 0; j < nf; ++j) {
@@ -340,22 +509,37 @@ inline Text_mesh_scan scan_off(const std::string& path, std::uintmax_t file_size
       return fail(0, "the file ends before face " + std::to_string(j) + " of " + std::to_string(nf));
     const std::size_t line = in.line();
     scan.face_line.push_back(line);
-    const std::vector<double> numbers = leading_numbers(in.rest_of_line(), stop);
+    const std::string text = in.rest_of_line();
+    read_numbers(text);
     if(numbers.empty() || numbers[0] < 0 || numbers[0] != std::floor(numbers[0]))
       return fail(line, "face " + std::to_string(j) + " does not start with its number of vertices");
-    const std::size_t size = static_cast<std::size_t>(numbers[0]);
-    if(numbers.size() <= size)
-      return fail(line, "face " + std::to_string(j) + " lists fewer than its " + std::to_string(size) +
+    if(static_cast<double>(numbers.size()) <= numbers[0])
+      return fail(line, "face " + std::to_string(j) + " lists fewer than its " + number_text_of(numbers[0]) +
                             " vertex indices");
+    const std::size_t size = static_cast<std::size_t>(numbers[0]);
     for(std::size_t c = 1; c <= size; ++c) {
       const double index = numbers[c];
       if(index < 0 || index >= static_cast<double>(nv) || index != std::floor(index)) {
-        std::ostringstream text;
-        text << index;
         scan.error_line = line;
-        scan.error = out_of_range_message(static_cast<std::size_t>(j), text.str(), static_cast<std::size_t>(nv));
+        scan.error = out_of_range_message(static_cast<std::size_t>(j), number_text_of(index),
+                                          static_cast<std::size_t>(nv));
         return scan;
       }
+    }
+    if(entries.empty() || !(entries[0] >= 0) || static_cast<double>(entries.size()) <= entries[0])
+      return fail(line, "face " + std::to_string(j) + " does not start with its number of vertices, then as many indices");
+    const std::size_t cgal_size = static_cast<std::size_t>(entries[0]);
+    for(std::size_t c = 1; c <= cgal_size; ++c)
+      if(!(entries[c] >= 0 && entries[c] < static_cast<double>(nv))) {
+        scan.error_line = line;
+        scan.error = out_of_range_message(static_cast<std::size_t>(j), number_text_of(entries[c]),
+                                          static_cast<std::size_t>(nv));
+        return scan;
+      }
+    if(colors) {
+      const std::string problem = color_problem(entries, cgal_size + 1, entries.size() - cgal_size - 1, face_colored);
+      if(!problem.empty())
+        return fail(line, "face " + std::to_string(j) + " " + problem);
     }
   }
   return scan;
@@ -437,6 +621,174 @@ inline Text_mesh_scan scan_obj(const std::string& path)
     scan.error = "the file has no face";
     return scan;
   }
+  return scan;
+}
+
+/// Checks a PLY file for what CGAL's PLY reader (CGAL 5.5) does not survive,
+/// before it reads the file: a property line before any element line (CGAL
+/// takes the last element of an empty list); an element count larger than
+/// the file (an element without properties is "read" that many times); a
+/// vertex coordinate or colour, or a halfedge index, of another type than
+/// the one CGAL reads it as (a failed assertion, then a null pointer); a list
+/// longer than the file, or whose length cannot be read (CGAL allocates the
+/// list before reading it, with an uninitialised length if the read failed).
+/// The header is read as CGAL reads it (line 1 "ply", line 2 the format,
+/// properties of unknown type skipped); the data only if a list length is
+/// 32-bit (an 8- or 16-bit length cannot ask for much), with CGAL's reads.
+inline Text_mesh_scan scan_ply(const std::string& path, std::uintmax_t file_size)
+{
+  Text_mesh_scan scan;
+  auto fail = [&](std::size_t line, const std::string& what) {
+    scan.error_line = line;
+    scan.error = "not a valid PLY file (" + what + ")";
+    return scan;
+  };
+  // CGAL's types: int8, uint8, int16, uint16, int32, uint32, float32, float64.
+  static const char* const names[16] = {"char", "uchar", "short", "ushort", "int", "uint", "float", "double",
+                                        "int8", "uint8", "int16", "uint16", "int32", "uint32", "float32", "float64"};
+  auto type_of = [](const std::string& name) {
+    const auto it = std::find(std::begin(names), std::end(names), name);
+    return it == std::end(names) ? -1 : static_cast<int>((it - std::begin(names)) % 8);
+  };
+  enum { uint8 = 1, uint32 = 5, float32 = 6, float64 = 7 };
+  struct Property { std::string name; int type; int size_type; }; // size_type -1: not a list
+  struct Element { std::string name; std::size_t count; std::size_t line; std::vector<Property> properties; };
+
+  std::ifstream in(path, std::ios::binary);
+  std::vector<Element> elements;
+  int format = 0; // 0 text, 1 little-endian, 2 big-endian
+  std::string text;
+  for(std::size_t number = 1; std::getline(in, text); ++number) {
+    std::istringstream words(text);
+    std::string keyword, a, b, c, d;
+    if(number == 1) {
+      if(!(words >> keyword) || keyword != "ply")
+        return fail(1, "the file does not start with \"ply\"");
+    } else if(number == 2) {
+      if(!(words >> keyword >> a >> b))
+        return fail(2, "the second line is not a format line");
+      format = a == "ascii" ? 0 : a == "binary_little_endian" ? 1 : a == "binary_big_endian" ? 2 : -1;
+      if(format < 0)
+        return fail(2, "unknown format \"" + a + "\"");
+    } else if(!(words >> keyword)) {
+      return fail(number, "empty header line");
+    } else if(keyword == "property") {
+      if(!(words >> a >> b) || (a == "list" && !(words >> c >> d)))
+        return fail(number, "cannot read the property line");
+      // "property TYPE NAME" or "property list SIZE_TYPE TYPE NAME"
+      const Property p = a == "list" ? Property{d, type_of(c), type_of(b)} : Property{b, type_of(a), -1};
+      if(elements.empty())
+        return fail(number, "a property line comes before any element line");
+      // CGAL skips a property of unknown type (and a list with a float length); so does the walk below.
+      if(p.type >= 0 && (a != "list" || (p.size_type >= 0 && p.size_type <= uint32)))
+        elements.back().properties.push_back(p);
+    } else if(keyword == "element") {
+      std::size_t count = 0;
+      if(!(words >> a >> count))
+        return fail(number, "cannot read the element line");
+      if(count > file_size)
+        return fail(number, "the header announces " + std::to_string(count) + " " + a + " items, more than the " +
+                                std::to_string(file_size) + " bytes of the file can hold");
+      elements.push_back({a, count, number, {}});
+    } else if(keyword == "end_header") {
+      break;
+    }
+  }
+
+  // The types CGAL asserts: the first property of each name it reads.
+  for(const Element& e : elements) {
+    auto find = [&](const char* name) -> const Property* {
+      for(const Property& p : e.properties)
+        if(p.name == name) return &p;
+      return nullptr;
+    };
+    auto is = [&](const char* name, int type) {
+      const Property* p = find(name);
+      return p && p->size_type < 0 && p->type == type;
+    };
+    auto require = [&](const char* name, const char* type, bool ok) {
+      const Property* p = find(name);
+      if(p && !ok)
+        fail(e.line, "property \"" + std::string(name) + "\" of element \"" + e.name + "\" is not of type " + type);
+      return !p || ok;
+    };
+    const bool vertex = e.name == "vertex" || e.name == "vertices";
+    if(vertex)
+      for(const char* xyz : {"x", "y", "z"})
+        if(!require(xyz, "float or double", is(xyz, float32) || is(xyz, float64)))
+          return scan;
+    if(vertex || e.name == "face" || e.name == "faces") {
+      const bool red = is("red", uint8);
+      if((red || is("r", uint8)) && (is("green", uint8) || is("g", uint8)) && (is("blue", uint8) || is("b", uint8)))
+        for(const char* rgb : red ? std::vector<const char*>{"red", "green", "blue"} : std::vector<const char*>{"r", "g", "b"})
+          if(!require(rgb, "uchar", is(rgb, uint8)))
+            return scan;
+    }
+    if(e.name == "halfedge" && !(is("source", uint32) && is("target", uint32) && is("u", float32) && is("v", float32)))
+      for(const char* end : {"source", "target"})
+        if(!require(end, "uint", is(end, uint32)))
+          return scan;
+  }
+
+  // List lengths, read as CGAL reads them.
+  bool long_lists = false;
+  for(const Element& e : elements)
+    for(const Property& p : e.properties)
+      long_lists = long_lists || p.size_type >= 4;
+  if(!long_lists)
+    return scan;
+  static const std::size_t sizes[8] = {1, 1, 2, 2, 4, 4, 4, 8};
+  auto read = [&](int type, double& value) -> bool {
+    if(format == 0) {
+      switch(type) {
+        case 0: { short v; if(!(in >> v)) return false; value = static_cast<signed char>(v); return true; }
+        case 1: { unsigned short v; if(!(in >> v)) return false; value = static_cast<unsigned char>(v); return true; }
+        case 2: { std::int16_t v; if(!(in >> v)) return false; value = v; return true; }
+        case 3: { std::uint16_t v; if(!(in >> v)) return false; value = v; return true; }
+        case 4: { std::int32_t v; if(!(in >> v)) return false; value = v; return true; }
+        case 5: { std::uint32_t v; if(!(in >> v)) return false; value = v; return true; }
+        default: { double v; if(!(in >> CGAL::IO::iformat(v))) return false; value = v; return true; }
+      }
+    }
+    unsigned char bytes[8];
+    if(!in.read(reinterpret_cast<char*>(bytes), static_cast<std::streamsize>(sizes[type])))
+      return false;
+    if(format == 2)
+      std::reverse(bytes, bytes + sizes[type]);
+    auto as = [&](auto t) { std::memcpy(&t, bytes, sizeof(t)); return static_cast<double>(t); };
+    switch(type) {
+      case 0: value = as(std::int8_t()); break;
+      case 1: value = as(std::uint8_t()); break;
+      case 2: value = as(std::int16_t()); break;
+      case 3: value = as(std::uint16_t()); break;
+      case 4: value = as(std::int32_t()); break;
+      case 5: value = as(std::uint32_t()); break;
+      case 6: value = as(float()); break;
+      default: value = as(double()); break;
+    }
+    return true;
+  };
+  for(const Element& e : elements)
+    for(std::size_t j = 0; j < e.count; ++j)
+      for(const Property& p : e.properties) {
+        double value;
+        const bool ok = read(p.size_type >= 0 ? p.size_type : p.type, value);
+        if(!ok && p.size_type < 0)
+          return scan; // CGAL stops here too, and reports the file as not valid
+        if(!ok) // CGAL would allocate a list of the unread (uninitialised) length first
+          return fail(0, "the length of list \"" + p.name + "\" of item " + std::to_string(j) + " of element \"" +
+                             e.name + "\" cannot be read");
+        if(p.size_type < 0)
+          continue;
+        // At least one byte per value in binary, two (a digit and a space) in text.
+        if(value < 0 || value * static_cast<double>(format == 0 ? 2 : sizes[p.type]) > static_cast<double>(file_size + 1))
+          return fail(0, "item " + std::to_string(j) + " of element \"" + e.name + "\" has a list \"" + p.name +
+                             "\" of " + std::to_string(static_cast<long long>(value)) + " values, " +
+                             (value < 0 ? "a negative length" : "more than the file can hold"));
+        for(std::size_t i = 0, n = static_cast<std::size_t>(value); i < n; ++i)
+          if(!read(p.type, value))
+            return scan;
+      }
   return scan;
 }
 
@@ -608,7 +960,9 @@ struct Polygon_provenance_visitor {
 ///   - "vertex I has a coordinate that is NaN or infinite"
 ///   - "face J has vertex index X, out of range (the file has N vertices)"
 ///   - "face J has only K vertices", "face J uses vertex I twice"
-///   - "non-manifold edge or vertex, or inconsistent orientation (...)"
+///   - "non-manifold edge or vertex, or inconsistent orientation (...)", with
+///     "; vertices I and K have the same position: the mesh may need welding"
+///     when two used points coincide
 ///   - "face J cannot be triangulated without a second edge between vertices I and K"
 ///   - "vertex I is non-manifold"
 template <class TriangleMesh>
@@ -640,9 +994,16 @@ Mesh_read_report read_triangle_mesh(const std::string& path, TriangleMesh& mesh)
 
   internal::Line_locator locate(path, format, file_size);
   if(format == internal::Mesh_format::off) {
-    const internal::Text_mesh_scan header = internal::scan_off(path, file_size, true);
-    if(!header.error.empty())
-      throw Input_error(path, header.error_line, header.error);
+    // The whole file, not only the header: CGAL's OFF reader trusts what the
+    // scan checks (see scan_off()). The scan is kept for the lines of later errors.
+    const internal::Text_mesh_scan& scan = locate.scan();
+    if(!scan.error.empty())
+      throw Input_error(path, scan.error_line, scan.error);
+  }
+  if(format == internal::Mesh_format::ply) {
+    const internal::Text_mesh_scan checked = internal::scan_ply(path, file_size);
+    if(!checked.error.empty())
+      throw Input_error(path, checked.error_line, checked.error);
   }
 
   // CGAL's stream readers of OFF and PLY print to std::cerr unless told not to.
@@ -704,9 +1065,29 @@ Mesh_read_report read_triangle_mesh(const std::string& path, TriangleMesh& mesh)
   if(!PMP::is_polygon_soup_a_polygon_mesh(polygons)) {
     std::size_t face = 0;
     const std::string detail = internal::describe_non_manifold(polygons, points.size(), face);
+    // Unwelded copies of a point (common in STL exports and scans) are the
+    // usual cause: say so, with the first pair.
+    std::string hint;
+    std::vector<std::size_t> order;
+    for(std::size_t i = 0; i < points.size(); ++i)
+      if(used[i]) order.push_back(i);
+    const auto position = [&](std::size_t i) {
+      return std::make_tuple(points[i].x(), points[i].y(), points[i].z());
+    };
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t a, std::size_t b) { return position(a) < position(b); });
+    std::size_t first = std::size_t(-1), second = 0;
+    for(std::size_t k = 1; k < order.size(); ++k)
+      if(position(order[k - 1]) == position(order[k]) && (std::min)(order[k - 1], order[k]) < first) {
+        first = (std::min)(order[k - 1], order[k]);
+        second = (std::max)(order[k - 1], order[k]);
+      }
+    if(first != std::size_t(-1))
+      hint = "; vertices " + std::to_string(first) + " and " + std::to_string(second) +
+             " have the same position: the mesh may need welding";
     throw Input_error(path, face == std::size_t(-1) ? 0 : locate.face_line(face),
                       "non-manifold edge or vertex, or inconsistent orientation" +
-                          (detail.empty() ? std::string() : " (" + detail + ")"));
+                          (detail.empty() ? std::string() : " (" + detail + ")") + hint);
   }
 
   // The mesh. An empty mesh without garbage appends vertices and faces in

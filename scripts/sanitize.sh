@@ -1,0 +1,14 @@
+#!/usr/bin/env bash
+# The test suite built with AddressSanitizer and UndefinedBehaviorSanitizer
+# (tests and tool; a separate build folder). Any report fails the run.
+# Leaves out the sweep (run in the normal build) and the install-consumer test.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/setup.sh
+build=${SANITIZE_BUILD_DIR:-build-sanitize}
+cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DDIFFUV_SANITIZE=ON \
+  -DDIFFUV_BUILD_EXAMPLES=OFF -DDIFFUV_BUILD_BENCHMARKS=OFF >/dev/null
+cmake --build "$build" --target diffuv_tests diffuv_tool -j"$(nproc)"
+export ASAN_OPTIONS=detect_leaks=1:strict_string_checks=1:detect_stack_use_after_return=1
+export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+ctest --test-dir "$build" --output-on-failure -j"$(nproc)" -LE "sweep|consumer" "$@"
