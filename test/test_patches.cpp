@@ -397,4 +397,37 @@ TEST(Dijkstra, NearestSourceIsTheSourceThatGivesTheDistance)
   }
 }
 
+// Without labels, a mesh of several components keeps each disc component whole
+// and cuts only the others: a grid next to the cow is one patch, the cow many.
+TEST(DiscPatches, EachDiscComponentStaysWhole)
+{
+  using diffuv_test::Mesh;
+  Mesh m = diffuv_test::make_grid(5, 4);
+  const std::size_t grid_faces = num_faces(m);
+  Mesh cow = diffuv_test::cgal_mesh("cow.off");
+  for(auto v : vertices(cow)) cow.point(v) = cow.point(v) + diffuv_test::Kernel::Vector_3(10, 0, 0);
+  m.join(cow);
+  diffuv::Segmentation<Mesh> seg;
+  diffuv::Patching_report report;
+  ASSERT_TRUE(diffuv::disc_patches(m, std::vector<int>(), m.points(), seg, diffuv::Patching_options(), &report).ok());
+  EXPECT_EQ(report.components, 2u);
+  EXPECT_EQ(report.whole_components, 1u);
+  EXPECT_TRUE(report.automatic);
+  // The grid's faces come first (join appends): they form exactly one patch.
+  const std::size_t grid_patch = seg.face_patch[0];
+  EXPECT_EQ(seg.patch_faces[grid_patch].size(), grid_faces);
+  EXPECT_GT(seg.number_of_patches(), 3u);
+
+  // Two grids: two whole patches, nothing automatic.
+  Mesh two = diffuv_test::make_grid(3, 3);
+  Mesh other = diffuv_test::make_grid(4, 3);
+  for(auto v : vertices(other)) other.point(v) = other.point(v) + diffuv_test::Kernel::Vector_3(0, 0, 5);
+  two.join(other);
+  ASSERT_TRUE(diffuv::disc_patches(two, std::vector<int>(), two.points(), seg, diffuv::Patching_options(), &report).ok());
+  EXPECT_EQ(report.components, 2u);
+  EXPECT_EQ(report.whole_components, 2u);
+  EXPECT_FALSE(report.automatic);
+  EXPECT_EQ(seg.number_of_patches(), 2u);
+}
+
 } // namespace

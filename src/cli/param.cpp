@@ -151,6 +151,17 @@ Parameterization parameterize_by_patches(const Input_mesh& in, const Patch_cli_o
   return result;
 }
 
+// Where the patches came from when no labels were given.
+std::string patch_source(const diffuv::Patching_report& r, int seeds)
+{
+  const std::string automatic = "automatic (" + std::to_string(seeds) + " seeds to start)";
+  if(r.components <= 1) return r.automatic ? automatic : "the whole disc";
+  std::string s = std::to_string(r.components) + " components, " + std::to_string(r.whole_components) +
+                  (r.whole_components == 1 ? " a whole disc" : " whole discs");
+  if(r.automatic) s += ", the others " + automatic;
+  return s;
+}
+
 std::string corner_rule(const diffuv::Side_report& r, bool given)
 {
   if(given) return "given";
@@ -309,6 +320,8 @@ void run_param(const Param_options& options)
   std::cout << (options.render_only ? "diffuv render " : "diffuv param ") << in.path << ": " << in.report.vertices << " vertices, " << num_faces(in.mesh) << " faces";
   if(in.report.polygons_triangulated > 0) std::cout << " (" << in.report.polygons_triangulated << " polygons triangulated)";
   if(in.report.degenerate_faces > 0) std::cout << ", " << in.report.degenerate_faces << " zero-area faces";
+  if(in.report.isolated_vertices > 0)
+    std::cout << ", " << in.report.isolated_vertices << " isolated vertices (in no face: no (u,v))";
   std::cout << '\n';
   if(!options.corners.empty()) {
     const auto& c = result.patches.front().sides.corners;
@@ -317,9 +330,7 @@ void run_param(const Param_options& options)
   } else {
     const auto& r = result.patching;
     std::cout << result.seg.number_of_patches() << " patches, " << options.distance << " distances: "
-              << (!in.label_source.empty() ? in.label_source
-                                           : r.automatic ? "automatic (" + std::to_string(options.patches.patches) + " seeds to start)"
-                                                         : "the whole disc")
+              << (!in.label_source.empty() ? in.label_source : patch_source(r, options.patches.patches))
               << "; " << r.merged << " merged, " << r.cut << " cut into discs, " << r.caps_split << " caps split\n";
   }
   std::printf("%-6s %6s %8s %8s %-10s %8s %6s %7s %5s %6s %8s %9s %9s %9s %9s %8s %9s %9s\n", "patch", "label",
@@ -351,6 +362,9 @@ void run_param(const Param_options& options)
     patch_ms += r.milliseconds;
   }
   print_row("total", "", vertex_entries, total.faces, "", total_ms, moved, forced, total);
+  if(in.report.degenerate_faces > 0)
+    std::cerr << "diffuv: warning: " << in.path << ": " << in.report.degenerate_faces
+              << " faces have zero area; their (u,v) triangles may be flat (column degen)\n";
   if(failed > 0)
     std::cerr << "diffuv: warning: " << failed << " of " << result.patches.size()
               << " patches cannot be parameterized (see the table); their faces have no (u,v)\n";

@@ -305,9 +305,11 @@ Status repair_folds(const TriangleMesh& tm, VertexPointMap vpm,
     if(lu.info() != Eigen::Success) return false;
     const Eigen::MatrixXd x = lu.solve(rhs);
     if(lu.info() != Eigen::Success || !x.allFinite()) return false;
+    // Convex combinations of points of the unit square stay in it up to a
+    // rounding step: clamp that step, (u,v) are documented to be in [0,1].
     for(std::size_t li = 0; li < unknowns.size(); ++li) {
-      u[unknowns[li]] = x(static_cast<Eigen::Index>(li), 0);
-      v[unknowns[li]] = x(static_cast<Eigen::Index>(li), 1);
+      u[unknowns[li]] = std::clamp(x(static_cast<Eigen::Index>(li), 0), 0., 1.);
+      v[unknowns[li]] = std::clamp(x(static_cast<Eigen::Index>(li), 1), 0., 1.);
     }
     return true;
   };

@@ -24,6 +24,8 @@ struct Patching_options {
 /// What `disc_patches()` did.
 struct Patching_report {
   bool automatic = false;          ///< no labels were given: patches were made automatically
+  std::size_t components = 1;      ///< connected components of the mesh (counted when no labels were given)
+  std::size_t whole_components = 0;  ///< components that were discs, kept as one patch each
   std::size_t merged = 0;          ///< patches with fewer than four boundary vertices merged into a neighbour
   std::size_t cut = 0;             ///< non-disc patches cut into discs
   std::size_t caps_split = 0;      ///< caps split in two
@@ -35,9 +37,9 @@ struct Patching_report {
 /// With `face_labels` (#F entries), each connected component of a label is a
 /// patch; patches with fewer than four boundary vertices are merged into a
 /// neighbour; a patch that is not a disc is cut into discs (or, with `strict`,
-/// reported); caps are split in two. Without labels (empty vector), a disc mesh
-/// is one patch and any other mesh is cut automatically (`voronoi_discs()`,
-/// connected component by connected component).
+/// reported); caps are split in two. Without labels (empty vector), each
+/// connected component that is a disc is one patch and any other component is
+/// cut automatically (`voronoi_discs()`).
 ///
 /// \returns `not_a_disc` (detail: the first bad patch) if a patch that is not a
 ///          disc is left, `ok` otherwise; `seg` is filled in both cases
@@ -50,21 +52,35 @@ Status disc_patches(const TriangleMesh& tm, std::vector<int> face_labels, Vertex
   Patching_report& r = report ? *report : local;
   r = Patching_report();
   auto findex = get(boost::face_index, tm);
+  // `strict` is about the given regions: automatic patches are ours to cut
+  // further (voronoi_discs() may stop at max_patches with a non-disc left).
+  const bool labelled = !face_labels.empty();
 
   if(face_labels.empty()) {
     face_labels.assign(num_faces(tm), 0);
     if(!check_disc(tm)) {
-      r.automatic = true;
+      // Component by component: a component that is a disc stays whole (one
+      // patch), any other one is cut automatically.
       std::vector<std::size_t> component(num_faces(tm));
-      const std::size_t components = CGAL::Polygon_mesh_processing::connected_components(
+      r.components = CGAL::Polygon_mesh_processing::connected_components(
           tm, boost::make_iterator_property_map(component.begin(), findex));
-      std::vector<std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>> parts(components);
-      for(auto f : faces(tm)) parts[component[get(findex, f)]].push_back(f);
+      std::vector<int> component_labels(component.begin(), component.end());
+      const Segmentation<TriangleMesh> by_component = patches_from_labels(tm, component_labels, vpm);
       int next_label = 0;
-      for(const auto& part : parts) {
+      for(std::size_t c = 0; c < by_component.number_of_patches(); ++c) {
+        const auto& part = by_component.patch_faces[c];
+        if(check_patch_disc(tm, by_component, c)) {
+          for(auto f : part) face_labels[get(findex, f)] = next_label;
+          ++next_label;
+          ++r.whole_components;
+          continue;
+        }
+        r.automatic = true;
         voronoi_discs(tm, part, vpm, face_labels, next_label, options.automatic);
         for(auto f : part) next_label = (std::max)(next_label, face_labels[get(findex, f)] + 1);
       }
+    } else {
+      r.whole_components = 1;
     }
   }
 
@@ -73,7 +89,7 @@ Status disc_patches(const TriangleMesh& tm, std::vector<int> face_labels, Vertex
 
   for(std::size_t p = 0; p < seg.number_of_patches(); ++p) {
     if(check_patch_disc(tm, seg, p)) continue;
-    if(options.strict) { r.not_discs.push_back(p); continue; }
+    if(options.strict && labelled) { r.not_discs.push_back(p); continue; }
     const std::size_t pieces = cut_into_discs(tm, seg, p, vpm, options.automatic);
     if(pieces > 1) {
       ++r.cut;

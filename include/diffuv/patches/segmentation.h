@@ -218,9 +218,35 @@ std::size_t merge_small_patches(const TriangleMesh& tm, std::vector<int>& face_l
           if(loop.neighbour[i] != Patch_loop<TriangleMesh>::mesh_border) shared[loop.neighbour[i]] += loop.length[i];
       }
       if(boundary_vertices >= min_boundary_vertices || shared.empty()) continue;
-      std::size_t best = shared.begin()->first;
-      for(const auto& [q, len] : shared)
-        if(len > shared[best]) best = q;
+      // The neighbour sharing the longest border (the lowest on a tie) whose
+      // union with p has enough boundary edges; if none has, the one sharing the
+      // longest border. Without the first rule the faces of a tiny closed
+      // component (a tetrahedron) pile up into one closed patch, one after the
+      // other, where two two-triangle discs were possible.
+      std::vector<std::pair<std::size_t, double>> candidates(shared.begin(), shared.end());
+      std::stable_sort(candidates.begin(), candidates.end(),
+                       [](const auto& a, const auto& b) { return a.second > b.second; });
+      std::size_t best = candidates.front().first;
+      for(const auto& candidate : candidates) {
+        const std::size_t q = candidate.first;
+        std::size_t edges = 0; // boundary edges of the union: p's not along q, then q's not along p
+        for(const auto& loop : loops)
+          for(std::size_t n : loop.neighbour) edges += n != q ? 1 : 0;
+        for(auto f : seg.patch_faces[q]) {
+          for(auto h : CGAL::halfedges_around_face(halfedge(f, tm), tm)) {
+            const auto g = face(opposite(h, tm), tm);
+            const std::size_t across = g == boost::graph_traits<TriangleMesh>::null_face()
+                                           ? Segmentation<TriangleMesh>::no_patch
+                                           : seg.face_patch[get(findex, g)];
+            if(across != q && across != p) ++edges;
+          }
+          if(edges >= min_boundary_vertices) break; // enough: a large neighbour stops early
+        }
+        if(edges >= min_boundary_vertices) {
+          best = q;
+          break;
+        }
+      }
       for(auto f : seg.patch_faces[p]) face_labels[get(findex, f)] = seg.patch_label[best];
       seg = patches_from_labels(tm, face_labels, vpm);
       ++merged;
