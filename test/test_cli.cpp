@@ -677,3 +677,171 @@ TEST_F(Correspond, PaintedRegionsPairByColour)
 }
 
 } // namespace
+
+// ---- The catalogue of bad inputs (doc/robustness.md) ----------------------------
+namespace {
+
+// One test per kind of bad input a user brings: the exact stderr they see, the
+// exit code, and whether anything was written. Inputs that diffuv can still use
+// (holes, several components, polygons, ...) give a result and say what they met.
+
+// A 3x3-vertex grid: vertices 0..8 row by row, 8 triangles; 4 is the only inner vertex.
+const std::string grid_points = "0 0 0\n1 0 0\n2 0 0\n0 1 0\n1 1 0\n2 1 0\n0 2 0\n1 2 0\n2 2 0\n";
+const std::string grid_faces = "3 0 1 4\n3 0 4 3\n3 1 2 5\n3 1 5 4\n3 3 4 7\n3 3 7 6\n3 4 5 8\n3 4 8 7\n";
+const std::string grid_off = "OFF\n9 8 0\n" + grid_points + grid_faces;
+
+// An n x n-vertex grid without the quads listed (x, y): holes.
+std::string grid_with_holes(int n, const std::set<std::pair<int, int>>& holes, double x0 = 0)
+{
+  std::ostringstream points, faces;
+  std::size_t count = 0;
+  for(int y = 0; y < n; ++y)
+    for(int x = 0; x < n; ++x) points << x + x0 << ' ' << y << " 0\n";
+  for(int y = 0; y + 1 < n; ++y)
+    for(int x = 0; x + 1 < n; ++x) {
+      if(holes.count({x, y})) continue;
+      const int a = y * n + x, b = a + 1, c = a + n, d = c + 1;
+      faces << "3 " << a << ' ' << b << ' ' << d << "\n3 " << a << ' ' << d << ' ' << c << '\n';
+      count += 2;
+    }
+  return "OFF\n" + std::to_string(n * n) + ' ' + std::to_string(count) + " 0\n" + points.str() + faces.str();
+}
+
+// Two 3x3 grids side by side, the second one's indices shifted by 9.
+std::string two_grids()
+{
+  std::ostringstream s;
+  s << "OFF\n18 16 0\n" << grid_points;
+  for(int i = 0; i < 9; ++i) s << 5 + i % 3 << ' ' << i / 3 << " 0\n";
+  s << grid_faces;
+  std::istringstream faces(grid_faces);
+  int k, a, b, c;
+  while(faces >> k >> a >> b >> c) s << "3 " << a + 9 << ' ' << b + 9 << ' ' << c + 9 << '\n';
+  return s.str();
+}
+
+struct Catalogue_entry {
+  std::string name;
+  std::vector<std::pair<std::string, std::string>> files; // written to the test folder first
+  std::string args;         // "{d}" stands for the test folder
+  int code;                 // the exit code
+  std::string err;          // the whole stderr, "{d}" as above
+  std::string out_has = {}; // a piece of stdout (results only)
+};
+
+std::ostream& operator<<(std::ostream& os, const Catalogue_entry& e) { return os << e.name; }
+
+const std::vector<Catalogue_entry>& catalogue()
+{
+  const std::string m = "param {d}/m.off";
+  static const std::vector<Catalogue_entry> entries = {
+      // Mesh files
+      {"empty_file", {{"m.off", ""}}, m, 1, "diffuv: error: {d}/m.off: the file is empty\n"},
+      {"truncated_off_in_the_points", {{"m.off", "OFF\n9 8 0\n0 0 0\n1 0 0\n2 0\n"}}, m, 1,
+       "diffuv: error: {d}/m.off:2: not a valid OFF file (the header announces 9 vertices and 8 faces, more than the "
+       "26 bytes of the file can hold)\n"},
+      {"truncated_off_in_the_faces", {{"m.off", "OFF\n9 8 0\n" + grid_points + "3 0 1 4\n3 0 4 3\n3 1 2 5\n"}}, m, 1,
+       "diffuv: error: {d}/m.off: not a valid OFF file (the file ends before face 3 of 8)\n"},
+      {"nan_coordinate", {{"m.off", "OFF\n9 8 0\n0 0 0\n1 0 0\n2 0 0\n0 1 0\nnan 1 0\n2 1 0\n0 2 0\n1 2 0\n2 2 0\n" + grid_faces}},
+       m, 1, "diffuv: error: {d}/m.off:7: vertex 4 has a coordinate that is NaN or infinite\n"},
+      {"infinite_coordinate", {{"m.off", "OFF\n9 8 0\n0 0 0\n1 0 0\n2 0 0\n0 1 0\n1 -inf 0\n2 1 0\n0 2 0\n1 2 0\n2 2 0\n" + grid_faces}},
+       m, 1, "diffuv: error: {d}/m.off:7: vertex 4 has a coordinate that is NaN or infinite\n"},
+      {"zero_area_faces", // the inner vertex moved onto vertex 1: two triangles collapse
+       {{"m.off", "OFF\n9 8 0\n0 0 0\n1 0 0\n2 0 0\n0 1 0\n1 0 0\n2 1 0\n0 2 0\n1 2 0\n2 2 0\n" + grid_faces}}, m, 0,
+       "diffuv: warning: {d}/m.off: 2 faces have zero area; their (u,v) triangles may be flat (column degen)\n",
+       "9 vertices, 8 faces, 2 zero-area faces\n"},
+      {"duplicate_vertices_not_welded", // vertex 9 repeats vertex 4; the right half of the grid uses it
+       {{"m.off", "OFF\n10 8 0\n" + grid_points + "1 1 0\n3 0 1 4\n3 0 4 3\n3 1 2 5\n3 1 5 9\n3 3 4 7\n3 3 7 6\n3 9 5 8\n3 9 8 7\n"}},
+       m, 1,
+       "diffuv: error: {d}/m.off: non-manifold edge or vertex, or inconsistent orientation (the faces around vertex 1 "
+       "form 2 separate fans); vertices 4 and 9 have the same position: the mesh may need welding\n"},
+      {"non_manifold_edge", {{"m.off", "OFF\n10 10 0\n" + grid_points + "1 -1 1\n" + grid_faces + "3 1 0 9\n3 0 1 9\n"}}, m, 1,
+       "diffuv: error: {d}/m.off:22: non-manifold edge or vertex, or inconsistent orientation (faces 0 and 9 both go "
+       "from vertex 0 to vertex 1)\n"},
+      {"non_manifold_vertex", // a second grid cell touching the first at vertex 8 only
+       {{"m.off", "OFF\n12 10 0\n" + grid_points + "3 3 0\n2 3 0\n3 2 0\n" + grid_faces + "3 8 11 9\n3 8 9 10\n"}}, m, 1,
+       "diffuv: error: {d}/m.off: non-manifold edge or vertex, or inconsistent orientation (the faces around vertex 8 "
+       "form 2 separate fans)\n"},
+      {"mesh_with_holes", {{"m.off", grid_with_holes(6, {{1, 1}, {3, 3}})}}, m, 0, "",
+       "36 vertices, 46 faces\n"},
+      {"several_components", {{"m.off", two_grids()}}, m, 0, "", "2 components, 2 whole discs"},
+      {"isolated_vertices", {{"m.off", "OFF\n11 8 0\n" + grid_points + "9 9 9\n8 8 8\n" + grid_faces}}, m, 0, "",
+       "11 vertices, 8 faces, 2 isolated vertices (in no face: no (u,v))\n1 patches, fmm distances: the whole disc"},
+      {"polygon_faces", {{"m.off", "OFF\n9 4 0\n" + grid_points + "4 0 1 4 3\n4 1 2 5 4\n4 3 4 7 6\n4 4 5 8 7\n"}}, m, 0,
+       "", "9 vertices, 8 faces (4 polygons triangulated)\n"},
+      // Label files
+      {"labels_wrong_count", {{"m.off", grid_off}, {"l.txt", "0\n0\n1\n"}}, m + " --labels {d}/l.txt", 1,
+       "diffuv: error: {d}/l.txt: the file has 3 labels, the mesh has 8 faces\n"},
+      {"labels_negative", {{"m.off", grid_off}, {"l.txt", "0\n0\n-1\n1\n1\n1\n1\n1\n"}}, m + " --labels {d}/l.txt", 1,
+       "diffuv: error: {d}/l.txt:3: label -1 is negative; labels are non-negative integers\n"},
+      {"labels_not_integers", {{"m.off", grid_off}, {"l.txt", "0\n0\n1.5\n1\n1\n1\n1\n1\n"}}, m + " --labels {d}/l.txt", 1,
+       "diffuv: error: {d}/l.txt:3: \"1.5\" is not an integer label\n"},
+      {"labels_huge", {{"m.off", grid_off}, {"l.txt", "0\n0\n99999999999\n1\n1\n1\n1\n1\n"}}, m + " --labels {d}/l.txt", 1,
+       "diffuv: error: {d}/l.txt:3: label 99999999999 is out of range\n"},
+      // Corner files (the grid's border vertices are all but 4)
+      {"corners_out_of_range", {{"m.off", grid_off}, {"c.txt", "0 2 8 9\n"}}, m + " --corners {d}/c.txt", 1,
+       "diffuv: error: {d}/c.txt:1: vertex index 9 is out of range (the mesh has 9 vertices)\n"},
+      {"corners_duplicated", {{"m.off", grid_off}, {"c.txt", "0 2 2 6\n"}}, m + " --corners {d}/c.txt", 1,
+       "diffuv: error: {d}/c.txt:1: a corner vertex is given twice (corners #2 and #3 listed): vertices 0 2 2 6\n"},
+      {"corners_not_on_the_border", {{"m.off", grid_off}, {"c.txt", "0 2 4 6\n"}}, m + " --corners {d}/c.txt", 1,
+       "diffuv: error: {d}/c.txt:1: a corner vertex is not on the boundary of the mesh (corner #3 listed): vertices 0 2 4 6\n"},
+      {"corners_fewer_than_four", {{"m.off", grid_off}, {"c.txt", "0 2 8\n"}}, m + " --corners {d}/c.txt", 1,
+       "diffuv: error: {d}/c.txt:1: exactly four corner vertices are needed (3 given)\n"},
+      // Output paths
+      {"output_folder_cannot_be_created", {{"m.off", grid_off}}, "param {d}/m.off -o /proc/diffuv-out", 3,
+       "diffuv: error: cannot write /proc/diffuv-out: cannot create the directory (No such file or directory)\n"},
+      {"output_path_is_a_file", {{"m.off", grid_off}, {"taken", "x\n"}}, "param {d}/m.off -o {d}/taken", 3,
+       "diffuv: error: cannot write {d}/taken: exists and is not a directory\n"},
+      {"output_path_under_a_file", {{"m.off", grid_off}, {"taken", "x\n"}}, "param {d}/m.off -o {d}/taken/out", 3,
+       "diffuv: error: cannot write {d}/taken/out: cannot create the directory (Not a directory)\n"},
+  };
+  return entries;
+}
+
+std::string with_folder(std::string s, const std::string& folder)
+{
+  for(std::size_t at; (at = s.find("{d}")) != std::string::npos;) s.replace(at, 3, folder);
+  return s;
+}
+
+class BadInput : public Tool, public ::testing::WithParamInterface<Catalogue_entry> {};
+
+TEST_P(BadInput, GivesTheCataloguedAnswer)
+{
+  const Catalogue_entry& e = GetParam();
+  for(const auto& [name, content] : e.files) write(name, content);
+  std::string args = with_folder(e.args, dir_.string());
+  if(args.find(" -o ") == std::string::npos) args += " -o " + out_dir().string();
+  const Tool_run r = run(args);
+  EXPECT_EQ(r.code, e.code) << r.err;
+  EXPECT_EQ(r.err, with_folder(e.err, dir_.string()));
+  if(e.code == 0) {
+    EXPECT_NE(r.out.find(e.out_has), std::string::npos) << r.out;
+    const auto rows = read_csv(out_dir() / "m.uv.csv");
+    EXPECT_GT(rows.size(), 1u);
+    for(const auto& row : rows)
+      for(const auto& cell : row) EXPECT_EQ(cell.find("nan"), std::string::npos) << e.name;
+  } else {
+    EXPECT_FALSE(fs::exists(out_dir())) << "an output was written";
+    EXPECT_TRUE(r.out.empty()) << r.out;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Catalogue, BadInput, ::testing::ValuesIn(catalogue()),
+                         [](const ::testing::TestParamInfo<Catalogue_entry>& info) { return info.param.name; });
+
+// An existing output folder is written into: diffuv's files are replaced (each
+// atomically), anything else in it is kept.
+TEST_F(Tool, AnExistingOutputFolderKeepsOtherFiles)
+{
+  const std::string mesh = write("m.off", grid_off);
+  fs::create_directories(out_dir());
+  std::ofstream(out_dir() / "notes.txt") << "mine\n";
+  std::ofstream(out_dir() / "m.uv.csv") << "stale\n";
+  const Tool_run r = run("param " + mesh + " -o " + out_dir().string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(slurp(out_dir() / "notes.txt"), "mine\n");
+  EXPECT_EQ(slurp(out_dir() / "m.uv.csv").rfind("vertex,", 0), 0u);
+}
+
+} // namespace
