@@ -746,6 +746,12 @@ const std::vector<Catalogue_entry>& catalogue()
        m, 1, "diffuv: error: {d}/m.off:7: vertex 4 has a coordinate that is NaN or infinite\n"},
       {"infinite_coordinate", {{"m.off", "OFF\n9 8 0\n0 0 0\n1 0 0\n2 0 0\n0 1 0\n1 -inf 0\n2 1 0\n0 2 0\n1 2 0\n2 2 0\n" + grid_faces}},
        m, 1, "diffuv: error: {d}/m.off:7: vertex 4 has a coordinate that is NaN or infinite\n"},
+      {"huge_coordinates", {{"m.off", "OFF\n9 8 0\n0 0 0\n1e70 0 0\n2 0 0\n0 1 0\n1 1 0\n2 1 0\n0 2 0\n1 2 0\n2 2 0\n" + grid_faces}},
+       m, 1, "diffuv: error: {d}/m.off:4: vertex 1 has a coordinate of 1e+70, too large to compute with (beyond 1e60): "
+             "rescale the mesh\n"},
+      {"tiny_mesh", {{"m.off", "OFF\n9 8 0\n0 0 0\n1e-70 0 0\n2e-70 0 0\n0 1e-70 0\n1e-70 1e-70 0\n2e-70 1e-70 0\n"
+                               "0 2e-70 0\n1e-70 2e-70 0\n2e-70 2e-70 0\n" + grid_faces}},
+       m, 1, "diffuv: error: {d}/m.off: the mesh is too small to compute with (it spans 2e-70, under 1e-60): rescale the mesh\n"},
       {"zero_area_faces", // the inner vertex moved onto vertex 1: two triangles collapse
        {{"m.off", "OFF\n9 8 0\n0 0 0\n1 0 0\n2 0 0\n0 1 0\n1 0 0\n2 1 0\n0 2 0\n1 2 0\n2 2 0\n" + grid_faces}}, m, 0,
        "diffuv: warning: {d}/m.off: 2 faces have zero area; their (u,v) triangles may be flat (column degen)\n",

@@ -633,6 +633,7 @@ TEST_F(IoSelection, Errors)
     {"1.5\n", 1, "\"1.5\" is not a vertex index (a non-negative integer)"},
     {"+2\n", 1, "\"+2\" is not a vertex index (a non-negative integer)"},
     {"7 99999999999999999999999\n", 1, "vertex index 99999999999999999999999 is too large"},
+    {std::string("3 \x01\0\n", 5), 1, "\"\\x01\\x00\" is not a vertex index (a non-negative integer)"},
   };
   int k = 0;
   for(const Case& c : cases) {
@@ -652,6 +653,12 @@ TEST_F(IoSelection, Errors)
   } catch(const diffuv::Input_error& e) {
     EXPECT_EQ(std::string(e.what()), path("missing.selection.txt") + ": cannot open file");
   }
+}
+
+TEST_F(IoSelection, ByteOrderMarkIsSkipped)
+{
+  EXPECT_EQ(diffuv::read_selection_file(write("bom.txt", "\xEF\xBB\xBF" "0 2 8 6\n")),
+            (std::vector<std::size_t>{0, 2, 8, 6}));
 }
 
 TEST_F(IoSelection, TabsCarriageReturnsAndOtherLines)
@@ -881,6 +888,40 @@ TEST_F(IoAtomicFile, FailedWriteKeepsTheOldFile)
   }
   EXPECT_EQ(content_of(target), "old");
   EXPECT_FALSE(fs::exists(file.temporary_path()));
+}
+
+// A full disk on the second file of a folder: neither file is replaced (the
+// first one, complete, must not be renamed before the second is known good).
+TEST_F(IoAtomicFile, AFailedFileLeavesTheWholeFolderAsItWas)
+{
+  const std::string a = write("a.txt", "old a");
+  const std::string b = write("b.txt", "old b");
+  {
+    diffuv::Output_folder folder(dir_.string());
+    folder.open("a.txt") << "new a";
+    std::ostream& second = folder.open("b.txt");
+    second << "half";
+    second.setstate(std::ios::badbit); // what a full disk does to the stream
+    try {
+      folder.commit();
+      ADD_FAILURE() << "no error";
+    } catch(const diffuv::Output_error& e) {
+      EXPECT_EQ(std::string(e.what()), b + ": writing failed (disk full or I/O error)");
+    }
+  }
+  EXPECT_EQ(content_of(a), "old a");
+  EXPECT_EQ(content_of(b), "old b");
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()), 2); // no temporary left
+
+  // The same in a folder the run creates: the folder goes too.
+  const fs::path fresh = dir_ / "fresh";
+  {
+    diffuv::Output_folder folder(fresh.string());
+    folder.open("a.txt") << "new a";
+    folder.open("b.txt").setstate(std::ios::badbit);
+    EXPECT_THROW(folder.commit(), diffuv::Output_error);
+  }
+  EXPECT_FALSE(fs::exists(fresh));
 }
 
 TEST_F(IoAtomicFile, MissingFolderThrows)

@@ -162,6 +162,13 @@ TEST_F(LabelsFile, Errors)
   EXPECT_EQ(e.line(), 7u);
   EXPECT_EQ(std::string(e.what()), path("h.txt") + ":7: label -3 is negative; labels are non-negative integers");
 
+  // Bytes that would cut or garble the one-line message are spelled out.
+  e = label_file_error(write("i.txt", std::string("0\n1\x01\0z\n", 7)), 2);
+  EXPECT_EQ(e.reason(), "\"1\\x01\\x00z\" is not an integer label");
+  EXPECT_EQ(e.line(), 2u);
+  // A UTF-8 byte-order mark (Windows editors) is not part of the first label.
+  EXPECT_EQ(diffuv::read_face_labels(write("bom.txt", "\xEF\xBB\xBF" "4\n2\n"), 2), (std::vector<int>{4, 2}));
+
   e = label_file_error(write("i.txt", "0\n1\n2\n"), 4);
   EXPECT_EQ(e.reason(), "the file has 3 labels, the mesh has 4 faces");
   EXPECT_EQ(e.line(), 0u);

@@ -123,6 +123,38 @@ private:
   std::string path_;
 };
 
+namespace internal {
+
+/// `text` as it can be quoted in a one-line message: bytes that are not
+/// printable ASCII (a NUL, a control character, binary junk) become \xHH, and
+/// a long text is cut at 40 characters.
+inline std::string printable(const std::string& text)
+{
+  static const char* const hex = "0123456789abcdef";
+  std::string out;
+  for(std::size_t i = 0; i < text.size() && i < 40; ++i) {
+    const unsigned char c = static_cast<unsigned char>(text[i]);
+    if(c >= 0x20 && c < 0x7f) {
+      out += static_cast<char>(c);
+    } else {
+      out += "\\x";
+      out += hex[c >> 4];
+      out += hex[c & 15];
+    }
+  }
+  if(text.size() > 40) out += "...";
+  return out;
+}
+
+/// Removes a UTF-8 byte-order mark from the start of `line` (editors on
+/// Windows write one; it is invisible in a message).
+inline void drop_byte_order_mark(std::string& line)
+{
+  if(line.compare(0, 3, "\xEF\xBB\xBF") == 0) line.erase(0, 3);
+}
+
+} // namespace internal
+
 } // namespace diffuv
 
 #endif // DIFFUV_ERROR_H

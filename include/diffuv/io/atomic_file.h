@@ -85,6 +85,25 @@ public:
   {
     if(committed_)
       return;
+    finish();
+    if(std::rename(temporary_.c_str(), target_.c_str()) != 0) {
+      const int e = errno;
+      std::remove(temporary_.c_str());
+      throw Output_error(target_, "cannot rename the temporary file " + temporary_ +
+                                  " onto it (" + std::strerror(e) + ")");
+    }
+    committed_ = true;
+  }
+
+  /// Flushes and closes the temporary file, without renaming it (the first
+  /// half of `commit()`: `Output_folder` finishes every file before renaming any).
+  /// Does nothing if already finished.
+  /// \throws Output_error naming the target if a write failed; the temporary
+  ///         file is then removed
+  void finish()
+  {
+    if(finished_)
+      return;
     // A full disk shows up at the flush, or only at the close when the last
     // buffer is written: check the stream after both.
     file_.flush();
@@ -94,13 +113,7 @@ public:
       std::remove(temporary_.c_str());
       throw Output_error(target_, "writing failed (disk full or I/O error)");
     }
-    if(std::rename(temporary_.c_str(), target_.c_str()) != 0) {
-      const int e = errno;
-      std::remove(temporary_.c_str());
-      throw Output_error(target_, "cannot rename the temporary file " + temporary_ +
-                                  " onto it (" + std::strerror(e) + ")");
-    }
-    committed_ = true;
+    finished_ = true;
   }
 
 private:
@@ -114,6 +127,7 @@ private:
   std::string target_;
   std::string temporary_;
   std::ofstream file_;
+  bool finished_ = false;
   bool committed_ = false;
 };
 
@@ -202,10 +216,12 @@ public:
     return p;
   }
 
-  /// Renames every file onto its target.
+  /// Renames every file onto its target, once every one of them is complete:
+  /// a write error (a full disk) in any file leaves the folder as it was.
   /// \throws Output_error naming the first file that fails
   void commit()
   {
+    for(auto& f : files_) f->finish();
     for(auto& f : files_) f->commit();
     committed_ = true;
   }

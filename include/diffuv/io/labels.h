@@ -70,7 +70,7 @@ inline int parse_label(const std::string& token, const std::string& path, std::s
   if(ec == std::errc::result_out_of_range && end == token.data() + token.size())
     throw Input_error(path, line, "label " + token + " is out of range");
   if(ec != std::errc() || end != token.data() + token.size())
-    throw Input_error(path, line, "\"" + token + "\" is not an integer label");
+    throw Input_error(path, line, "\"" + printable(token) + "\" is not an integer label");
   if(value < std::numeric_limits<int>::min() || value > std::numeric_limits<int>::max())
     throw Input_error(path, line, "label " + token + " is out of range");
   if(value < 0)
@@ -100,6 +100,7 @@ inline std::vector<int> read_face_labels(const std::string& path, std::size_t ex
   std::vector<int> labels;
   std::string line;
   for(std::size_t number = 1; std::getline(in, line); ++number) {
+    if(number == 1) internal::drop_byte_order_mark(line);
     const std::size_t hash = line.find('#');
     if(hash != std::string::npos)
       line.erase(hash);

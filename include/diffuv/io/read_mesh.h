@@ -958,6 +958,8 @@ struct Polygon_provenance_visitor {
 ///     parentheses when it is known (OFF and OBJ)
 ///   - "the file has no face"
 ///   - "vertex I has a coordinate that is NaN or infinite"
+///   - "vertex I has a coordinate of X, too large to compute with (beyond 1e60): rescale the mesh",
+///     "the mesh is too small to compute with (it spans X, under 1e-60): rescale the mesh"
 ///   - "face J has vertex index X, out of range (the file has N vertices)"
 ///   - "face J has only K vertices", "face J uses vertex I twice"
 ///   - "non-manifold edge or vertex, or inconsistent orientation (...)", with
@@ -1061,6 +1063,34 @@ Mesh_read_report read_triangle_mesh(const std::string& path, TriangleMesh& mesh)
                                                       std::to_string(*twice) + " twice");
     for(std::size_t index : polygon)
       used[index] = true;
+  }
+  // Scale: lengths are squared and areas multiplied in double precision, so
+  // a mesh far beyond 1e60 or within 1e-60 gives infinities or zeros (every
+  // vertex at the centre of the square): refuse it rather than answer wrong.
+  {
+    constexpr double largest = 1e60, smallest = 1e-60;
+    double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+    for(std::size_t i = 0; i < points.size(); ++i) {
+      if(!used[i]) continue;
+      const double c[3] = {CGAL::to_double(points[i].x()), CGAL::to_double(points[i].y()),
+                           CGAL::to_double(points[i].z())};
+      for(int k = 0; k < 3; ++k) {
+        if(std::abs(c[k]) > largest) {
+          std::ostringstream what;
+          what << "vertex " << i << " has a coordinate of " << c[k]
+               << ", too large to compute with (beyond 1e60): rescale the mesh";
+          throw Input_error(path, locate.vertex_line(i), what.str());
+        }
+        lo[k] = (std::min)(lo[k], c[k]);
+        hi[k] = (std::max)(hi[k], c[k]);
+      }
+    }
+    const double extent = (std::max)({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
+    if(extent < smallest) {
+      std::ostringstream what;
+      what << "the mesh is too small to compute with (it spans " << extent << ", under 1e-60): rescale the mesh";
+      throw Input_error(path, 0, what.str());
+    }
   }
   if(!PMP::is_polygon_soup_a_polygon_mesh(polygons)) {
     std::size_t face = 0;

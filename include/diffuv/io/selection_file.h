@@ -46,6 +46,7 @@ inline std::vector<std::size_t> read_selection_file(const std::string& path)
 
   std::string line;
   std::getline(in, line); // an empty file leaves `line` empty
+  internal::drop_byte_order_mark(line);
 
   std::vector<std::size_t> indices;
   std::istringstream tokens(line);
@@ -60,7 +61,7 @@ inline std::vector<std::size_t> read_selection_file(const std::string& path)
     if(ec == std::errc::result_out_of_range)
       throw Input_error(path, 1, "vertex index " + token + " is too large");
     if(ec != std::errc() || end != last)
-      throw Input_error(path, 1, "\"" + token + "\" is not a vertex index (a non-negative integer)");
+      throw Input_error(path, 1, "\"" + internal::printable(token) + "\" is not a vertex index (a non-negative integer)");
     indices.push_back(value);
   }
   if(indices.empty())
