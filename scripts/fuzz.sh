@@ -12,6 +12,12 @@
 #   FUZZ_JOBS        targets run at the same time (default: the number of cores, at most 4)
 #   FUZZ_BUILD_DIR   the build folder (default: build-fuzz)
 #   FUZZ_BUILD_JOBS  parallel compile jobs (default: the number of cores)
+#   FUZZ_SEED        libFuzzer's random seed (default: a new one each run).
+#                    With a fixed seed a run is repeatable: the same mutations
+#                    in the same order, so a shorter run (a slower machine)
+#                    tries a prefix of what a longer one tried. CI fixes it,
+#                    so that CI cannot turn red on a bug that the change under
+#                    test did not bring; runs without it explore further.
 #   CXX              the compiler (default: clang++)
 #
 # Installs nothing: run `bash scripts/setup.sh` first (clang, libclang-rt-dev).
@@ -73,7 +79,7 @@ cmake -S . -B "$build" -DCMAKE_CXX_COMPILER="$cxx" -DCMAKE_BUILD_TYPE=RelWithDeb
   -DDIFFUV_BUILD_FUZZERS=ON -DDIFFUV_BUILD_TESTS=OFF -DDIFFUV_BUILD_TOOL=OFF \
   -DDIFFUV_BUILD_EXAMPLES=OFF -DDIFFUV_BUILD_BENCHMARKS=OFF >/dev/null
 cmake --build "$build" -j"${FUZZ_BUILD_JOBS:-$cores}" --target $(printf 'fuzz_%s ' "${targets[@]}")
-echo "fuzz: built in $(( SECONDS - start )) s; running ${targets[*]} for $seconds s each, $jobs at a time"
+echo "fuzz: built in $(( SECONDS - start )) s; running ${targets[*]} for $seconds s each, $jobs at a time, seed ${FUZZ_SEED:-random}"
 
 run="$build/fuzz-run"
 # The targets write each input to a file (diffuv's readers take file names):
@@ -93,7 +99,7 @@ fuzz_one() {
   UBSAN_OPTIONS="print_stacktrace=1${UBSAN_OPTIONS:+:$UBSAN_OPTIONS}" \
   "$build/test/fuzz/fuzz_$t" "$dir/corpus" \
     -max_total_time="$seconds" -max_len="$(max_len_of "$t")" -dict="$(dict_of "$t")" \
-    -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
+    -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 ${FUZZ_SEED:+-seed=$FUZZ_SEED} \
     -artifact_prefix="$dir/artifacts/" >"$dir/log.txt" 2>&1 || rc=$?
   echo "$rc" >"$dir/rc"
 }

@@ -265,4 +265,42 @@ TEST_F(FuzzFoundMesh, OffColoursNormalsAndTexturesCheckedBeforeCgalReads)
     EXPECT_EQ(diffuv::read_triangle_mesh(write("ok.off", content), mesh).faces, 1u) << content;
 }
 
+// A polygon whose first and last corners coincide once projected along its
+// normal: CGAL's triangulate_face() inserts the closing constraint from a
+// point to itself, a precondition of Constrained_triangulation_2 (found by
+// fuzz_mesh_param; undefined in release builds). Such a polygon is cut as a
+// fan, like the polygons that triangulate_face() refuses.
+TEST_F(FuzzFoundMesh, PolygonWhoseCornersCoincideInProjectionIsCutAsAFan)
+{
+  for(const std::string& face : {"5 0 1 2 3 4\n", "5 4 0 1 2 3\n", "5 0 4 1 2 3\n"}) {
+    const std::string off = "OFF\n5 1 0\n0 0 0\n1 0 0\n1.5 1 0\n0.5 1.5 0\n0 0 0\n" + face;
+    Mesh mesh;
+    const diffuv::Mesh_read_report report = diffuv::read_triangle_mesh(write("pentagon.off", off), mesh);
+    EXPECT_EQ(report.polygons_triangulated, 1u) << face;
+    EXPECT_EQ(num_faces(mesh), 3u) << face;
+    EXPECT_TRUE(CGAL::is_triangle_mesh(mesh)) << face;
+    EXPECT_TRUE(mesh.is_valid(false)) << face;
+    EXPECT_EQ(report.file_face, (std::vector<std::size_t>{0, 0, 0})) << face;
+  }
+}
+
+// CGAL 5.5's constrained triangulation of a strongly non-planar pentagon
+// left a corrupt mesh (a vertex whose halfedge does not point to it), and
+// the walk around that vertex never ended (found by fuzz_mesh_param: a
+// timeout). The polygons are then cut as fans.
+TEST_F(FuzzFoundMesh, CorruptTriangulationFallsBackToFans)
+{
+  const std::string points = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 14\n";
+  // The fan of the pentagon needs edge 1-4 (a diagonal of face 1) a second time: a clear error.
+  expect({{"pentagon.obj", points + "f 1 4 3 2\nf 1 2 6 5\nf 2 3 1 5 8\n", 11,
+           "face 2 cannot be triangulated without a second edge between vertices 1 and 4"}});
+  // Alone, the same pentagon is cut as a fan: a valid mesh.
+  Mesh mesh;
+  const diffuv::Mesh_read_report report = diffuv::read_triangle_mesh(write("alone.obj", points + "f 2 3 1 5 8\n"), mesh);
+  EXPECT_TRUE(mesh.is_valid(false));
+  EXPECT_TRUE(CGAL::is_triangle_mesh(mesh));
+  EXPECT_EQ(report.polygons_triangulated, 1u);
+  EXPECT_EQ(report.file_face, (std::vector<std::size_t>{0, 0, 0}));
+}
+
 } // namespace

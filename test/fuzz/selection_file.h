@@ -31,7 +31,9 @@ inline void selection_file(const std::uint8_t* data, std::size_t size)
   diffuv_fuzz::note(std::to_string(indices.size()) + " indices");
   diffuv_fuzz::check(!indices.empty(), "read_selection_file returned no index without an error");
 
-  const std::string text(reinterpret_cast<const char*>(data), size);
+  std::string text(reinterpret_cast<const char*>(data), size);
+  if(text.compare(0, 3, "\xEF\xBB\xBF") == 0)
+    text.erase(0, 3); // the reader skips a UTF-8 byte order mark
   std::istringstream first_line(text.substr(0, text.find('\n')));
   std::size_t k = 0;
   for(std::string word; first_line >> word; ++k) {
