@@ -9,6 +9,7 @@ packages=(
   libcgal-demo                         # CGAL's data set: data.tar.gz / examples.tar.gz
   libboost-dev libboost-graph-dev      # Boost.Graph (Dijkstra reference), Boost.Heap
   libeigen3-dev                        # linear algebra for CGAL's parameterizers
+  libtbb-dev                           # oneTBB: patches mapped in parallel
   libgtest-dev                         # tests
   libcli11-dev                         # the diffuv command line
   libstb-dev                           # stb_image_write: PNG textures and renders

@@ -223,6 +223,26 @@ TEST_F(Tool, ClosedMeshesAreCutIntoPatchesAndEveryVertexIsMapped)
     EXPECT_EQ(slurp(out_dir() / png).substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8)) << png;
 }
 
+// --threads changes nothing but the time; the summary says how long each
+// stage took.
+TEST_F(Tool, ThreadsGiveTheSameFilesAndStagesAreTimed)
+{
+  std::string tables[2];
+  for(int k = 0; k < 2; ++k) {
+    const std::string dir = (out_dir() / std::to_string(k)).string();
+    const Tool_run r = run("param " + data_path("meshes/man.off") + " --threads " + (k == 0 ? "1" : "2") + " -o " + dir);
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.out.find("\nstages: read "), std::string::npos) << r.out;
+    for(const char* stage : {", patches ", ", map ", ", measure ", ", write "})
+      EXPECT_NE(r.out.find(stage), std::string::npos) << stage << " in " << r.out;
+    tables[k] = slurp(fs::path(dir) / "man.uv.csv");
+  }
+  EXPECT_GT(tables[0].size(), 1000u);
+  EXPECT_EQ(tables[0], tables[1]);
+  const Tool_run bad = run("param " + data_path("meshes/man.off") + " --threads -1 -o " + out_dir().string());
+  EXPECT_EQ(bad.code, 2) << bad.err;
+}
+
 TEST_F(Tool, SegmentWritesPatchesThatReadBackAsLabelsAndAsPaint)
 {
   const Tool_run seg = run("segment " + data_path("meshes/cow.off") + " -o " + out_dir().string());

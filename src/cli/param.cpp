@@ -22,8 +22,10 @@
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <sstream>
 #include <string>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 namespace diffuv_cli {
@@ -47,6 +49,7 @@ struct Param_options {
   bool svg = false;
   std::string color = "patches";
   bool render_only = false; // diffuv render: the picture only
+  std::size_t threads = 0;   // 0: every core (with oneTBB)
   Patch_cli_options patches;
 };
 
@@ -83,7 +86,8 @@ struct Parameterization {
   diffuv::Segmentation<Mesh> seg;
   diffuv::Patching_report patching;
   std::vector<diffuv::Patch_result<Mesh>> patches;
-  double milliseconds = 0;
+  double milliseconds = 0;       // patches + map
+  double patches_ms = 0;         // making the patches
 };
 
 bool is_corner_problem(diffuv::Status_code code)
@@ -137,15 +141,17 @@ Parameterization parameterize_with_corners(const Input_mesh& in, const std::vect
 
 // Any mesh: disc patches (from labels, or automatic), each mapped on its own.
 Parameterization parameterize_by_patches(const Input_mesh& in, const Patch_cli_options& options,
-                                         const std::string& distance, const diffuv::Repair_options& repair)
+                                         const std::string& distance, const diffuv::Repair_options& repair,
+                                         std::size_t threads)
 {
   Parameterization result;
   result.atlas = std::make_unique<Atlas>(in.mesh);
   const auto start = std::chrono::steady_clock::now();
   result.seg = make_patches(in, options, result.patching);
+  result.patches_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   result.patches = with_distance(distance, [&](auto tag) {
     return diffuv::parameterize_patches(in.mesh, result.seg, in.mesh.points(), *result.atlas, tag,
-                                        diffuv::Fibonacci_heap_tag(), repair);
+                                        diffuv::Fibonacci_heap_tag(), repair, nullptr, true, threads);
   });
   result.milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return result;
@@ -256,13 +262,47 @@ diffuv::Image picture(const Input_mesh& in, const Parameterization& result, cons
   return image;
 }
 
+// How long each stage of a run took: "stages: read 120 ms, ..." at the end,
+// and, for meshes over a million vertices, a line on stderr as each stage
+// ends, so that a long run shows where it is.
+struct Stage_clock {
+  bool large = false;
+  std::vector<std::pair<std::string, double>> stages;
+  std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
+
+  void restart() { start = std::chrono::steady_clock::now(); }
+  void add(const std::string& name, double ms, const std::string& detail = {})
+  {
+    stages.emplace_back(name, ms);
+    if(large)
+      std::cerr << "diffuv: " << name << (detail.empty() ? "" : " (" + detail + ")") << " done in " << ms / 1000.
+                << " s" << std::endl;
+  }
+  void done(const std::string& name, const std::string& detail = {})
+  {
+    add(name, std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count(), detail);
+    restart();
+  }
+  std::string summary() const
+  {
+    std::ostringstream s;
+    s.precision(3);
+    for(std::size_t i = 0; i < stages.size(); ++i)
+      s << (i ? ", " : "") << stages[i].first << ' ' << stages[i].second << " ms";
+    return s.str();
+  }
+};
+
 void run_param(const Param_options& options)
 {
   parse_size(options.size); // a bad --size is a usage error before any work
   if(!options.corners.empty() && (!options.patches.labels.empty()))
     throw CLI::ValidationError("--corners", "applies to a disc mesh without --labels");
   const std::string mesh_path = options.mesh.empty() ? default_mesh("cow.off") : options.mesh;
+  Stage_clock stages;
   const Input_mesh in = read_input(mesh_path, options.patches);
+  stages.large = in.report.vertices > 1000000;
+  stages.done("read", std::to_string(in.report.vertices) + " vertices");
 
   std::vector<vertex_descriptor> corners;
   if(!options.corners.empty())
@@ -274,10 +314,14 @@ void run_param(const Param_options& options)
   diffuv::Repair_options repair;
   repair.enabled = !options.no_repair;
   for(int run = 0; run < options.runs; ++run) {
-    result = options.corners.empty() ? parameterize_by_patches(in, options.patches, options.distance, repair)
-                                     : parameterize_with_corners(in, corners, options.corners, options.distance, repair);
+    result = options.corners.empty()
+                 ? parameterize_by_patches(in, options.patches, options.distance, repair, options.threads)
+                 : parameterize_with_corners(in, corners, options.corners, options.distance, repair);
     times.push_back(result.milliseconds);
   }
+  stages.add("patches", result.patches_ms, std::to_string(result.seg.number_of_patches()) + " patches");
+  stages.add("map", result.milliseconds - result.patches_ms,
+             options.runs > 1 ? "last of " + std::to_string(options.runs) + " runs" : std::string());
   std::sort(times.begin(), times.end());
   const double total_ms = times[times.size() / 2];
   const Atlas& atlas = *result.atlas;
@@ -295,7 +339,9 @@ void run_param(const Param_options& options)
 
   // Everything is computed before anything is written: all files or none.
   const std::vector<std::string> inputs = {in.path, options.corners, options.patches.labels};
+  stages.restart();
   const std::vector<Chart_measure> measures = measure_charts(in, result); // for the picture and the table
+  stages.done("measure");
   diffuv::Output_folder out(options.output, inputs);
   if(!options.render_only) {
     // A textured OBJ: any viewer shows the map as a checkerboard on the mesh.
@@ -315,6 +361,7 @@ void run_param(const Param_options& options)
   diffuv::write_png(out.open(output_name(in.path, ".png")), picture(in, result, measures, options),
                     output_name(in.path, ".png"));
   out.commit();
+  stages.done("write");
 
   // The summary.
   std::cout << (options.render_only ? "diffuv render " : "diffuv param ") << in.path << ": " << in.report.vertices << " vertices, " << num_faces(in.mesh) << " faces";
@@ -369,7 +416,9 @@ void run_param(const Param_options& options)
     std::cerr << "diffuv: warning: " << failed << " of " << result.patches.size()
               << " patches cannot be parameterized (see the table); their faces have no (u,v)\n";
   std::cout << "time: " << total_ms << " ms in all (median of " << options.runs << "), of which "
-            << patch_ms << " ms mapping the patches\n";
+            << patch_ms << " ms mapping the patches (summed over " << (options.threads == 1 ? "1 thread" : "the threads")
+            << ")\n";
+  std::cout << "stages: " << stages.summary() << '\n';
   std::cout << "wrote";
   for(const auto& p : out.paths()) std::cout << ' ' << p;
   std::cout << '\n';
@@ -447,6 +496,10 @@ void add_param_command(CLI::App& app)
   add_common_options(cmd, *options);
   cmd->add_flag("--svg", options->svg, "Also write each patch's uv layout as OUTPUT/<mesh>.patch<N>.svg (flipped "
                                       "triangles in red, the four sides in colour)");
+  cmd->add_option("--threads", options->threads,
+                  "Threads mapping the patches: 0 = every core, 1 = one after the other (the results are the same)")
+      ->check(CLI::Range(std::size_t(0), std::size_t(1024)))
+      ->capture_default_str();
   cmd->add_option("--runs", options->runs, "Run the parameterization N times and report the median time")
       ->check(CLI::Range(1, 1000))
       ->capture_default_str();

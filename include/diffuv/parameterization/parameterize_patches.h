@@ -13,9 +13,22 @@
 #include <diffuv/patches/region_sides.h>
 #include <diffuv/patches/segmentation.h>
 
+#include <diffuv/graph/patch_graph.h>
+
 #include <CGAL/boost/graph/Face_filtered_graph.h>
 
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+#endif
+
+#include <algorithm>
 #include <chrono>
+#include <cstddef>
+#include <stdexcept>
+#include <type_traits>
 #include <vector>
 
 namespace diffuv {
@@ -28,22 +41,77 @@ struct Patch_result {
   Four_sides<typename boost::graph_traits<TriangleMesh>::vertex_descriptor> sides;
   Side_report side_report;           ///< how the corners were found
   Repair_report repair;              ///< what the fold repair did
-  double milliseconds = 0;           ///< sides, four distance runs, (u,v), repair and chart (kd-tree)
+  double milliseconds = 0;           ///< sides, four distance runs, (u,v), repair and chart (kd-tree), on its thread
 };
+
+namespace internal {
+
+// What one patch leaves for the atlas; filled in parallel, added in patch order.
+template <class TriangleMesh>
+struct Patch_chart {
+  std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor> vertices;
+  std::vector<typename Uv_atlas<TriangleMesh>::Point_2> uv;
+};
+
+// The scratch of one thread: kept from one patch to the next.
+template <class TriangleMesh>
+struct Patch_scratch {
+  Patch_graph<TriangleMesh> graph;
+};
+
+// Runs `body(p, scratch)` for every patch, on `threads` threads (0: as many
+// as oneTBB's default arena; 1 or no oneTBB: one after the other).
+template <class TriangleMesh, class Body>
+void for_each_patch(std::size_t patches, std::size_t threads, Body body)
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  if(threads != 1 && patches > 1) {
+    tbb::enumerable_thread_specific<Patch_scratch<TriangleMesh>> scratch;
+    auto loop = [&] {
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, patches, 1), [&](const tbb::blocked_range<std::size_t>& r) {
+        Patch_scratch<TriangleMesh>& local = scratch.local();
+        for(std::size_t p = r.begin(); p != r.end(); ++p) body(p, local);
+      });
+    };
+    if(threads == 0) {
+      loop();
+    } else {
+      tbb::task_arena arena(static_cast<int>(threads));
+      arena.execute(loop);
+    }
+    return;
+  }
+#endif
+  (void)threads;
+  Patch_scratch<TriangleMesh> scratch;
+  for(std::size_t p = 0; p < patches; ++p) body(p, scratch);
+}
+
+} // namespace internal
 
 /// Parameterizes every patch of `seg` as a chart of `atlas`: canonical sides
 /// from the neighbouring regions (`region_sides()`), then the diffusion
-/// coordinates on the patch (a `CGAL::Face_filtered_graph`), with edge lengths
-/// computed once for the whole mesh, and distances of the kind `DistanceTag`
-/// (`Default_distance_tag` = `Fmm_distance_tag` by default; `Graph_distance_tag`, the paper's; `Exact_distance_tag`).
+/// coordinates on the patch, with edge lengths computed once for the whole
+/// mesh, and distances of the kind `DistanceTag` (`Default_distance_tag` =
+/// `Fmm_distance_tag` by default; `Graph_distance_tag`, the paper's;
+/// `Exact_distance_tag`).
 ///
 /// Folds are then repaired (`repair_folds()`) unless `repair.enabled` is false.
+///
+/// With graph distances and no repair (the paper's method) each patch is
+/// copied into a compact graph (`Patch_graph`) for its four runs; otherwise
+/// the runs and the repair walk a `CGAL::Face_filtered_graph` of the mesh.
+/// Patches are mapped in parallel when oneTBB is linked (CMake option
+/// `DIFFUV_WITH_TBB`); the charts are added in patch order, so the atlas and
+/// the results do not depend on the number of threads.
 ///
 /// A patch that fails (not a disc, too short a boundary) gets no chart; the
 /// others are still mapped.
 ///
 /// \param corner_names if given, #P entries: corners to follow (see `region_sides()`)
 /// \param move_corners_off_ears see `region_sides()`
+/// \param threads how many threads map patches: 0 (default) as many as the
+///        machine has, 1 one after the other
 /// \returns #P results, one per patch
 template <class TriangleMesh, class VertexPointMap, class DistanceTag = Default_distance_tag,
           class HeapTag = Fibonacci_heap_tag>
@@ -53,36 +121,72 @@ std::vector<Patch_result<TriangleMesh>> parameterize_patches(const TriangleMesh&
                                                              DistanceTag = DistanceTag(), HeapTag = HeapTag(),
                                                              const Repair_options& repair = Repair_options(),
                                                              const std::vector<Corner_names>* corner_names = nullptr,
-                                                             bool move_corners_off_ears = true)
+                                                             bool move_corners_off_ears = true,
+                                                             std::size_t threads = 0)
 {
   using Patch = CGAL::Face_filtered_graph<TriangleMesh>;
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
-  using Point_2 = typename Uv_atlas<TriangleMesh>::Point_2;
   const auto lengths = edge_length_map(tm, vpm);
+  const bool compact_graph = std::is_same<DistanceTag, Graph_distance_tag>::value && !repair.enabled;
   std::vector<Patch_result<TriangleMesh>> results(seg.number_of_patches());
+  std::vector<internal::Patch_chart<TriangleMesh>> charts(seg.number_of_patches());
 
-  for(std::size_t p = 0; p < seg.number_of_patches(); ++p) {
+  internal::for_each_patch<TriangleMesh>(seg.number_of_patches(), threads, [&](std::size_t p, auto& scratch) {
     Patch_result<TriangleMesh>& r = results[p];
+    internal::Patch_chart<TriangleMesh>& chart = charts[p];
     const auto start = std::chrono::steady_clock::now();
     r.status = check_patch_disc(tm, seg, p);
     if(r.status)
       r.status = region_sides(tm, seg, p, vpm, r.sides, &r.side_report,
                               corner_names && p < corner_names->size() ? &(*corner_names)[p] : nullptr,
                               move_corners_off_ears);
-    if(!r.status) continue;
+    if(!r.status) return;
 
-    const Patch patch(tm, seg.patch_faces[p]);
-    auto pindex = get(boost::vertex_index, patch);
-    std::vector<Point_2> uv(num_vertices(patch));
-    Diffusion_coordinates<Patch, HeapTag, DistanceTag> coordinates(patch);
-    r.status = coordinates.compute(r.sides, lengths, boost::make_iterator_property_map(uv.begin(), pindex));
-    if(!r.status) continue;
-    repair_folds(patch, vpm, r.sides, boost::make_iterator_property_map(uv.begin(), pindex), &r.repair, repair);
-
-    std::vector<vertex_descriptor> chart_vertices(num_vertices(patch));
-    for(vertex_descriptor v : vertices(patch)) chart_vertices[get(pindex, v)] = v;
-    r.chart = atlas.add_chart(seg.patch_faces[p], std::move(chart_vertices), std::move(uv));
+    if(compact_graph) {
+      auto findex = get(boost::face_index, tm);
+      auto& pg = scratch.graph;
+      pg.build(tm, seg.patch_faces[p],
+               [&](auto f) { return f != boost::graph_traits<TriangleMesh>::null_face() && seg.face_patch[get(findex, f)] == p; },
+               lengths);
+      using Local = typename Patch_graph<TriangleMesh>::vertex_descriptor;
+      Four_sides<Local> local_sides;
+      auto to_local = [&](const std::vector<vertex_descriptor>& side, std::vector<Local>& out) {
+        out.reserve(side.size());
+        for(vertex_descriptor v : side) out.push_back(pg.local(tm, v));
+        return std::find(out.begin(), out.end(), Patch_graph<TriangleMesh>::none) == out.end();
+      };
+      if(!(to_local(r.sides.u1, local_sides.u1) && to_local(r.sides.u2, local_sides.u2) &&
+           to_local(r.sides.v1, local_sides.v1) && to_local(r.sides.v2, local_sides.v2))) {
+        throw std::logic_error("parameterize_patches: a side vertex is not a vertex of its patch");
+      }
+      chart.uv.resize(pg.number_of_vertices());
+      Diffusion_coordinates<typename Patch_graph<TriangleMesh>::Graph, HeapTag, Graph_distance_tag> coordinates(
+          pg.graph());
+      r.status = coordinates.compute(local_sides, pg.length_map(),
+                                     boost::make_iterator_property_map(chart.uv.begin(),
+                                                                       get(boost::vertex_index, pg.graph())));
+      if(!r.status) return;
+      chart.vertices = pg.mesh_vertices();
+    } else {
+      const Patch patch(tm, seg.patch_faces[p]);
+      auto pindex = get(boost::vertex_index, patch);
+      chart.uv.resize(num_vertices(patch));
+      Diffusion_coordinates<Patch, HeapTag, DistanceTag> coordinates(patch);
+      r.status = coordinates.compute(r.sides, lengths, boost::make_iterator_property_map(chart.uv.begin(), pindex));
+      if(!r.status) return;
+      repair_folds(patch, vpm, r.sides, boost::make_iterator_property_map(chart.uv.begin(), pindex), &r.repair, repair);
+      chart.vertices.resize(num_vertices(patch));
+      for(vertex_descriptor v : vertices(patch)) chart.vertices[get(pindex, v)] = v;
+    }
     r.milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  });
+
+  for(std::size_t p = 0; p < seg.number_of_patches(); ++p) {
+    if(!results[p].status) continue;
+    const auto start = std::chrono::steady_clock::now();
+    results[p].chart = atlas.add_chart(seg.patch_faces[p], std::move(charts[p].vertices), std::move(charts[p].uv));
+    results[p].milliseconds +=
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   }
   return results;
 }

@@ -9,6 +9,7 @@
 
 #include <diffuv/error.h>
 #include <diffuv/graph/multi_source_dijkstra.h>
+#include <diffuv/internal/index_marks.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -25,7 +26,6 @@
 #include <map>
 #include <numeric>
 #include <string>
-#include <unordered_set>
 #include <vector>
 
 namespace diffuv {
@@ -170,14 +170,18 @@ std::vector<Patch_loop<TriangleMesh>> patch_loops(const TriangleMesh& tm, const 
   auto on_boundary = [&](halfedge_descriptor h) { return patch_of(h) == p && patch_of(opposite(h, tm)) != p; };
 
   std::vector<Patch_loop<TriangleMesh>> loops;
-  std::vector<bool> used(num_halfedges(tm), false);
+  // The boundary halfedges already walked, sorted: O(boundary) memory, where
+  // a flag per halfedge of the mesh made each call O(mesh).
+  std::vector<std::size_t> used;
+  auto walked = [&](halfedge_descriptor h) {
+    return std::binary_search(used.begin(), used.end(), static_cast<std::size_t>(get(hindex, h)));
+  };
   for(auto f : seg.patch_faces[p])
     for(halfedge_descriptor start : CGAL::halfedges_around_face(halfedge(f, tm), tm)) {
-      if(!on_boundary(start) || used[get(hindex, start)]) continue;
+      if(!on_boundary(start) || walked(start)) continue;
       Patch_loop<TriangleMesh> loop;
       halfedge_descriptor h = start;
       do {
-        used[get(hindex, h)] = true;
         loop.vertices.push_back(source(h, tm));
         loop.halfedges.push_back(h);
         loop.neighbour.push_back(patch_of(opposite(h, tm)));
@@ -188,6 +192,8 @@ std::vector<Patch_loop<TriangleMesh>> patch_loops(const TriangleMesh& tm, const 
         while(!on_boundary(g)) g = next(opposite(g, tm), tm);
         h = g;
       } while(h != start);
+      for(halfedge_descriptor b : loop.halfedges) used.push_back(static_cast<std::size_t>(get(hindex, b)));
+      std::sort(used.begin(), used.end());
       loops.push_back(std::move(loop));
     }
   return loops;
@@ -277,24 +283,27 @@ Status check_patch_disc(const TriangleMesh& tm, const Segmentation<TriangleMesh>
   };
 
   // Triangles, vertices, boundary edges; connectivity by a walk over edges.
-  std::vector<std::size_t> vertex_ids;
-  std::size_t boundary_edges = 0;
+  // The marks are kept per thread from one call to the next (4 bytes per
+  // vertex and per face of the largest mesh seen) so that a call is O(patch).
+  thread_local internal::Index_marks seen_vertices, seen_faces;
+  seen_vertices.reset(num_vertices(tm));
+  seen_faces.reset(num_faces(tm));
+  std::size_t V = 0, boundary_edges = 0;
   for(auto f : pf) {
     if(!CGAL::is_triangle(halfedge(f, tm), tm))
       return fail(Status_code::not_triangle_mesh, "face " + std::to_string(get(findex, f)));
     for(auto h : CGAL::halfedges_around_face(halfedge(f, tm), tm)) {
-      vertex_ids.push_back(get(vindex, target(h, tm)));
+      if(seen_vertices.insert(get(vindex, target(h, tm)))) ++V;
       if(!in_patch(face(opposite(h, tm), tm))) ++boundary_edges;
     }
   }
-  std::sort(vertex_ids.begin(), vertex_ids.end());
-  const std::size_t V = static_cast<std::size_t>(std::unique(vertex_ids.begin(), vertex_ids.end()) - vertex_ids.begin());
   std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> queue = {pf.front()};
-  std::unordered_set<std::size_t> seen_faces = {static_cast<std::size_t>(get(findex, pf.front()))};
+  queue.reserve(pf.size());
+  seen_faces.insert(get(findex, pf.front()));
   for(std::size_t q = 0; q < queue.size(); ++q)
     for(auto h : CGAL::halfedges_around_face(halfedge(queue[q], tm), tm)) {
       const auto g = face(opposite(h, tm), tm);
-      if(in_patch(g) && seen_faces.insert(static_cast<std::size_t>(get(findex, g))).second) queue.push_back(g);
+      if(in_patch(g) && seen_faces.insert(get(findex, g))) queue.push_back(g);
     }
   if(queue.size() != pf.size())
     return fail(Status_code::disconnected_mesh, "");
