@@ -151,6 +151,15 @@ TEST_F(FuzzFoundMesh, PlyCountsAndTypesCheckedBeforeCgalReads)
     {"unread_list.ply", "ply\nformat ascii 1.0\nelement vertex 3\n" + xyz +
                             "element face 1\nproperty list int int vertex_indices\nend_header\n" + triangle_vertices,
      0, "not a valid PLY file (the length of list \"vertex_indices\" of item 0 of element \"face\" cannot be read)"},
+    // CGAL ignores a failed read of the faces and reads the next element's
+    // list lengths from the failed stream, uninitialised (found by
+    // fuzz_mesh_param in CI: a 3.4 GB, then a 7 GB allocation).
+    {"faces_then_lists.ply", "ply\nformat ascii 1.0\nelement vertex 3\n" + xyz +
+                                 "element face 1\nproperty list uchar int vertex_indices\nproperty double q\n"
+                                 "element other 1\nproperty list int int stuff\nend_header\n" + triangle_vertices +
+                                 "3 0 1 2\n",
+     0, "not a valid PLY file (item 0 of element \"face\" ends before its property \"q\" can be read, and a later "
+        "element has lists)"},
     {"negative_list.ply", "ply\nformat ascii 1.0\nelement vertex 3\n" + xyz +
                               "element face 1\nproperty list int int vertex_indices\nend_header\n" +
                               triangle_vertices + "-3 0 1 2\n",

@@ -181,6 +181,44 @@ TEST(Dijkstra, ReusableObjectGivesSameResultsAcrossRuns)
   }
 }
 
+// Farthest-point sampling adds sources one by one: add_source() after a run
+// gives the distances of one run on all the sources (Boost's, the reference),
+// and each vertex's origin is a source at exactly that distance.
+TEST(Dijkstra, AddingSourcesOneByOneGivesTheRunOnAllOfThem)
+{
+  const Mesh& mesh = cgal_mesh("man.off");
+  auto lengths = diffuv::edge_length_map(mesh);
+  auto index = get(boost::vertex_index, mesh);
+  const auto all = every_kth_vertex(mesh, 997);
+  ASSERT_GT(all.size(), 10u);
+  diffuv::Multi_source_dijkstra<Mesh> dijkstra(mesh);
+  std::vector<double> dist(num_vertices(mesh));
+  std::vector<std::size_t> origin(num_vertices(mesh));
+  auto dmap = boost::make_iterator_property_map(dist.begin(), index);
+  auto omap = boost::make_iterator_property_map(origin.begin(), index);
+  ASSERT_TRUE(dijkstra.run(std::vector<vertex_descriptor>{all.front()}, lengths, dmap, omap).ok());
+  for(std::size_t k = 1; k < all.size(); ++k)
+    ASSERT_TRUE(dijkstra.add_source(all[k], k, lengths, dmap, omap).ok());
+  ASSERT_TRUE(dijkstra.add_source(all[3], 99, lengths, dmap, omap).ok()); // a source again: nothing changes
+  const std::vector<double> expected = boost_reference(mesh, lengths, all);
+  for(auto v : vertices(mesh)) EXPECT_NEAR(dist[v.idx()], expected[v.idx()], 1e-12) << v;
+  EXPECT_EQ(origin[all[3].idx()], 3u);
+  // The origin is a nearest source: its own distance to v is the distance of v.
+  for(std::size_t k : {0u, 5u}) {
+    std::vector<double> from_k(num_vertices(mesh));
+    ASSERT_TRUE(diffuv::multi_source_dijkstra(mesh, std::vector<vertex_descriptor>{all[k]}, lengths,
+                                              boost::make_iterator_property_map(from_k.begin(), index))
+                    .ok());
+    std::size_t owned = 0;
+    for(auto v : vertices(mesh))
+      if(origin[v.idx()] == k) {
+        ++owned;
+        EXPECT_NEAR(from_k[v.idx()], dist[v.idx()], 1e-12) << v;
+      }
+    EXPECT_GT(owned, 0u);
+  }
+}
+
 TEST(Dijkstra, RestrictedToAPatchOfFaceFilteredGraph)
 {
   // A patch: the faces whose centroid has x below the median. Distances on the

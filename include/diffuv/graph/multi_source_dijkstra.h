@@ -116,7 +116,40 @@ public:
     }
     if(!any_source)
       return Status(Status_code::empty_source_range);
+    return settle(weight, distance, origin);
+  }
 
+  /// Lowers the distances of the previous run (or `add_source()`) with one
+  /// more source, `s` at position `position` of the source list: only the
+  /// vertices now nearer to `s` than to every earlier source are visited and
+  /// rewritten, so that farthest-point sampling, which adds sources one by
+  /// one, costs the cells of the new sources rather than one whole run per
+  /// source. The result is that of `run()` on all the sources, except that a
+  /// vertex exactly as far from `s` as from an earlier source keeps the earlier one.
+  ///
+  /// \pre `distance` (and `origin`) hold the result of a run on the same graph
+  template <class WeightMap, class DistanceMap, class OriginMap>
+  Status add_source(vertex_descriptor s, std::size_t position, WeightMap weight, DistanceMap distance,
+                    OriginMap origin)
+  {
+    std::fill(state_.begin(), state_.end(), unseen);
+    heap_.clear();
+    if(!(get(distance, s) > 0.)) return Status(); // already a source
+    put(distance, s, 0.);
+    put(origin, s, position);
+    handles_[get(vertex_index_, s)] = heap_.push(Node{0., s});
+    state_[get(vertex_index_, s)] = queued;
+    return settle(weight, distance, origin);
+  }
+
+  const Graph& graph() const { return graph_; }
+
+private:
+  // Dijkstra's loop from the queued vertices; a vertex is relaxed only to a
+  // strictly smaller distance.
+  template <class WeightMap, class DistanceMap, class OriginMap>
+  Status settle(WeightMap weight, DistanceMap distance, OriginMap origin)
+  {
     while(!heap_.empty()) {
       const Node top = heap_.top();
       heap_.pop();
@@ -145,9 +178,6 @@ public:
     return Status();
   }
 
-  const Graph& graph() const { return graph_; }
-
-private:
   const Graph& graph_;
   VertexIndexMap vertex_index_;
   Heap heap_;

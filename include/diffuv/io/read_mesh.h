@@ -772,11 +772,25 @@ inline Text_mesh_scan scan_ply(const std::string& path, std::uintmax_t file_size
     }
     return true;
   };
-  for(const Element& e : elements)
+  for(std::size_t k = 0; k < elements.size(); ++k) {
+    const Element& e = elements[k];
+    // CGAL stops at a value it cannot read, except in a face element: it
+    // ignores what reading the faces returned and reads the next elements
+    // from the failed stream, where a list length is never written before it
+    // is allocated (found by fuzzing: 7 GB).
+    const bool faces_then_lists =
+        (e.name == "face" || e.name == "faces") &&
+        std::any_of(elements.begin() + static_cast<std::ptrdiff_t>(k) + 1, elements.end(), [](const Element& later) {
+          return std::any_of(later.properties.begin(), later.properties.end(),
+                             [](const Property& p) { return p.size_type >= 4; });
+        });
     for(std::size_t j = 0; j < e.count; ++j)
       for(const Property& p : e.properties) {
         double value;
         const bool ok = read(p.size_type >= 0 ? p.size_type : p.type, value);
+        if(!ok && faces_then_lists)
+          return fail(0, "item " + std::to_string(j) + " of element \"" + e.name + "\" ends before its property \"" + p.name +
+                             "\" can be read, and a later element has lists");
         if(!ok && p.size_type < 0)
           return scan; // CGAL stops here too, and reports the file as not valid
         if(!ok) // CGAL would allocate a list of the unread (uninitialised) length first
@@ -790,9 +804,14 @@ inline Text_mesh_scan scan_ply(const std::string& path, std::uintmax_t file_size
                              "\" of " + std::to_string(static_cast<long long>(value)) + " values, " +
                              (value < 0 ? "a negative length" : "more than the file can hold"));
         for(std::size_t i = 0, n = static_cast<std::size_t>(value); i < n; ++i)
-          if(!read(p.type, value))
+          if(!read(p.type, value)) {
+            if(faces_then_lists)
+              return fail(0, "item " + std::to_string(j) + " of element \"" + e.name + "\" ends before its property \"" + p.name +
+                                 "\" can be read, and a later element has lists");
             return scan;
+          }
       }
+  }
   return scan;
 }
 

@@ -469,13 +469,16 @@ std::size_t voronoi_discs(const TriangleMesh& tm,
   }
   std::vector<std::size_t> seeds = {first_seed};
   const std::size_t target = options.patches > 0 ? options.patches : 1;
+  dijkstra.run(seeds, weight, dmap, omap);
+  // Each new seed only lowers the distances of the faces nearer to it: one
+  // bounded run per seed instead of a whole run on all the seeds.
+  auto add_seed = [&](std::size_t s) {
+    seeds.push_back(s);
+    dijkstra.add_source(s, seeds.size() - 1, weight, dmap, omap);
+  };
+  while(seeds.size() < target && seeds.size() < n) add_seed(farthest(all));
 
   while(true) {
-    dijkstra.run(seeds, weight, dmap, omap);
-    if(seeds.size() < target && seeds.size() < n) {
-      seeds.push_back(farthest(all));
-      continue;
-    }
     // Labels of the region's faces by cell; faces outside hidden behind one sentinel.
     std::vector<int> labels(num_faces(tm), std::numeric_limits<int>::min());
     for(std::size_t i = 0; i < n; ++i) labels[get(findex, region[i])] = static_cast<int>(origin[i]);
@@ -513,7 +516,7 @@ std::size_t voronoi_discs(const TriangleMesh& tm,
         for(auto f : seg.patch_faces[p]) face_labels[get(findex, f)] = first_label + static_cast<int>(p);
       return seeds.size();
     }
-    seeds.insert(seeds.end(), added.begin(), added.end());
+    for(std::size_t i : added) add_seed(i);
   }
 }
 

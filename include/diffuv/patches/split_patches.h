@@ -123,13 +123,17 @@ bool split_cap(const TriangleMesh& tm, Segmentation<TriangleMesh>& seg, std::siz
   for(vertex_descriptor end : ends) {
     // chain[k] -- path[k] -- chain[k+1], from the end back to the tip.
     std::vector<vertex_descriptor> chain = {end};
+    std::set<vertex_descriptor> in_chain = {end};
     std::vector<typename boost::graph_traits<TriangleMesh>::edge_descriptor> path;
     while(chain.back() != tip) {
       const vertex_descriptor x = chain.back();
       bool stepped = false;
       for(auto h : CGAL::halfedges_around_target(halfedge(x, graph), graph)) {
         const vertex_descriptor y = source(h, graph);
-        if(from_tip[get(pindex, y)] + get(lengths, edge(h, graph)) == from_tip[get(pindex, x)]) {
+        // Across a zero-length edge the distance does not decrease: without
+        // the check the walk went back and forth forever (found by fuzzing).
+        if(from_tip[get(pindex, y)] + get(lengths, edge(h, graph)) == from_tip[get(pindex, x)] &&
+           in_chain.insert(y).second) {
           path.push_back(edge(h, graph));
           chain.push_back(y);
           stepped = true;
