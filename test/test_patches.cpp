@@ -560,4 +560,24 @@ TEST(ParallelPatches, ResultsDoNotDependOnTheNumberOfThreads)
   }
 }
 
+// A disc mesh is one patch: the paper's method runs its four passes on two
+// threads instead; the same coordinates bit for bit.
+TEST(ParallelPatches, FourPassesOfOnePatchInParallelGiveTheSameCoordinates)
+{
+  const Mesh& disc = cgal_mesh("nefertiti.off");
+  Seg seg;
+  ASSERT_TRUE(diffuv::disc_patches(disc, {}, disc.points(), seg).ok());
+  ASSERT_EQ(seg.number_of_patches(), 1u);
+  std::vector<std::unique_ptr<diffuv::Uv_atlas<Mesh>>> atlases;
+  for(std::size_t threads : {1u, 2u}) {
+    atlases.push_back(std::make_unique<diffuv::Uv_atlas<Mesh>>(disc));
+    const auto r = diffuv::parameterize_patches(disc, seg, disc.points(), *atlases.back(), diffuv::Graph_distance_tag(),
+                                                diffuv::Fibonacci_heap_tag(), diffuv::Repair_options{false}, nullptr,
+                                                true, threads);
+    ASSERT_TRUE(r.front().status.ok()) << threads;
+  }
+  EXPECT_EQ(atlases[1]->chart(0).vertices, atlases[0]->chart(0).vertices);
+  EXPECT_EQ(atlases[1]->chart(0).uv, atlases[0]->chart(0).uv);
+}
+
 } // namespace

@@ -18,6 +18,7 @@
 #include <diffuv/error.h>
 
 #include <CGAL/IO/OBJ.h>
+#include <CGAL/exceptions.h>
 #include <CGAL/IO/OFF.h>
 #include <CGAL/IO/PLY.h>
 #include <CGAL/IO/STL.h>
@@ -1210,7 +1211,19 @@ Mesh_read_report read_triangle_mesh(const std::string& path, TriangleMesh& mesh)
       const bool cdt = polygons[j].size() == 4 ||
                        (use_cdt && !internal::polygon_corners_coincide_in_projection(f, mesh));
       asked_cgal = asked_cgal || (cdt && polygons[j].size() > 4);
-      if(!cdt || !PMP::triangulate_face(f, mesh, CGAL::parameters::visitor(provenance))) {
+      bool cut = false;
+      if(cdt) {
+        // With assertions on (debug and fuzzing builds), the constrained
+        // triangulation of a strongly non-planar polygon can fail one (found
+        // by fuzzing); the release build's result is checked below. Either
+        // way every polygon is then cut as a fan.
+        try {
+          cut = PMP::triangulate_face(f, mesh, CGAL::parameters::visitor(provenance));
+        } catch(const CGAL::Failure_exception&) {
+          return false;
+        }
+      }
+      if(!cut) {
         // triangulate_face() gives up on a polygon without a normal (collinear
         // or coinciding corners), or with corners that coincide once
         // projected, before changing anything: cut a fan instead.

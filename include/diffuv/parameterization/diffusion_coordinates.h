@@ -16,6 +16,10 @@
 #include <boost/property_map/property_map.hpp>
 #include <boost/range/iterator_range.hpp>
 
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/parallel_for.h>
+#endif
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -73,19 +77,48 @@ public:
   ///          `unreachable_vertices` if some vertex is not reached from a side (their
   ///          coordinates follow `diffusion_ratio()`: NaN if reached from neither side
   ///          of a pair); `ok` otherwise
+  ///
+  /// \param parallel_passes run the four distance passes on two threads
+  ///        (oneTBB; ignored without it). Each pass then has its own engine, so
+  ///        this pays only where an engine costs little to set up (graph
+  ///        distances); `parameterize_patches()` uses it for a mesh of one patch.
   template <class WeightMap, class UvMap>
-  Status compute(const Four_sides<vertex_descriptor>& sides, WeightMap weight, UvMap uv)
+  Status compute(const Four_sides<vertex_descriptor>& sides, WeightMap weight, UvMap uv, bool parallel_passes = false)
   {
     const std::array<const std::vector<vertex_descriptor>*, 4> sources = {&sides.u1, &sides.u2, &sides.v1, &sides.v2};
     static const char* const names[4] = {"u1", "u2", "v1", "v2"};
     auto index = get(boost::vertex_index, graph_);
-    for(std::size_t s = 0; s < 4; ++s) {
+    for(std::size_t s = 0; s < 4; ++s)
       if(sources[s]->empty())
         return Status(Status_code::empty_side, std::string("side ") + names[s]);
-      Status status = engine_.run(*sources[s], weight,
-                                  boost::make_iterator_property_map(distance_[s].begin(), index));
-      if(!status) return status;
+    std::array<Status, 4> status;
+    auto pass = [&](std::size_t s, auto& engine) {
+      status[s] = engine.run(*sources[s], weight, boost::make_iterator_property_map(distance_[s].begin(), index));
+    };
+#ifdef CGAL_LINKED_WITH_TBB
+    if(parallel_passes) {
+      // u1 and u2 here, v1 and v2 on another thread, each pair with its own engine.
+      tbb::parallel_for(std::size_t(0), std::size_t(2), [&](std::size_t half) {
+        if(half == 0) {
+          pass(0, engine_);
+          pass(1, engine_);
+        } else {
+          internal::Distance_engine<Graph, HeapTag, DistanceTag> other(graph_);
+          pass(2, other);
+          pass(3, other);
+        }
+      });
+    } else
+#endif
+    {
+      (void)parallel_passes;
+      for(std::size_t s = 0; s < 4; ++s) {
+        pass(s, engine_);
+        if(!status[s]) return status[s];
+      }
     }
+    for(const Status& st : status)
+      if(!st) return st;
 
     using Point_2 = typename boost::property_traits<UvMap>::value_type;
     std::size_t unreachable = 0;

@@ -102,8 +102,9 @@ void for_each_patch(std::size_t patches, std::size_t threads, Body body)
 /// copied into a compact graph (`Patch_graph`) for its four runs; otherwise
 /// the runs and the repair walk a `CGAL::Face_filtered_graph` of the mesh.
 /// Patches are mapped in parallel when oneTBB is linked (CMake option
-/// `DIFFUV_WITH_TBB`); the charts are added in patch order, so the atlas and
-/// the results do not depend on the number of threads.
+/// `DIFFUV_WITH_TBB`), and with the paper's method the four passes of a
+/// single patch; the charts are added in patch order, so the atlas and the
+/// results do not depend on the number of threads.
 ///
 /// A patch that fails (not a disc, too short a boundary) gets no chart; the
 /// others are still mapped.
@@ -162,9 +163,12 @@ std::vector<Patch_result<TriangleMesh>> parameterize_patches(const TriangleMesh&
       chart.uv.resize(pg.number_of_vertices());
       Diffusion_coordinates<typename Patch_graph<TriangleMesh>::Graph, HeapTag, Graph_distance_tag> coordinates(
           pg.graph());
+      // One patch (a disc mesh): its four passes in parallel instead.
+      const bool parallel_passes = threads != 1 && seg.number_of_patches() == 1;
       r.status = coordinates.compute(local_sides, pg.length_map(),
                                      boost::make_iterator_property_map(chart.uv.begin(),
-                                                                       get(boost::vertex_index, pg.graph())));
+                                                                       get(boost::vertex_index, pg.graph())),
+                                     parallel_passes);
       if(!r.status) return;
       chart.vertices = pg.mesh_vertices();
     } else {
