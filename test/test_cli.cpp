@@ -241,6 +241,8 @@ TEST_F(Tool, ThreadsGiveTheSameFilesAndStagesAreTimed)
   EXPECT_EQ(tables[0], tables[1]);
   const Tool_run bad = run("param " + data_path("meshes/man.off") + " --threads -1 -o " + out_dir().string());
   EXPECT_EQ(bad.code, 2) << bad.err;
+  const Tool_run render = run("render " + data_path("meshes/cow.off") + " --threads 1 -o " + (out_dir() / "r").string());
+  EXPECT_EQ(render.code, 0) << render.err;
 }
 
 TEST_F(Tool, SegmentWritesPatchesThatReadBackAsLabelsAndAsPaint)
@@ -792,7 +794,7 @@ const std::vector<Catalogue_entry>& catalogue()
        "36 vertices, 46 faces\n"},
       {"several_components", {{"m.off", two_grids()}}, m, 0, "", "2 components, 2 whole discs"},
       {"isolated_vertices", {{"m.off", "OFF\n11 8 0\n" + grid_points + "9 9 9\n8 8 8\n" + grid_faces}}, m, 0, "",
-       "11 vertices, 8 faces, 2 isolated vertices (in no face: no (u,v))\n1 patches, fmm distances: the whole disc"},
+       "11 vertices, 8 faces, 2 isolated vertices (in no face: no (u,v))\n1 patch, fmm distances: the whole disc"},
       {"polygon_faces", {{"m.off", "OFF\n9 4 0\n" + grid_points + "4 0 1 4 3\n4 1 2 5 4\n4 3 4 7 6\n4 4 5 8 7\n"}}, m, 0,
        "", "9 vertices, 8 faces (4 polygons triangulated)\n"},
       // Label files

@@ -20,9 +20,11 @@
 #include <limits>
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <sstream>
+#include <thread>
 #include <string>
 #include <tuple>
 #include <utility>
@@ -271,12 +273,20 @@ struct Stage_clock {
   std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
 
   void restart() { start = std::chrono::steady_clock::now(); }
+  // 950 ms, 9.70 s: milliseconds below a second, else seconds.
+  static std::string duration(double ms)
+  {
+    char text[32];
+    if(ms < 1000.) std::snprintf(text, sizeof text, "%.3g ms", ms);
+    else std::snprintf(text, sizeof text, "%.2f s", ms / 1000.);
+    return text;
+  }
   void add(const std::string& name, double ms, const std::string& detail = {})
   {
     stages.emplace_back(name, ms);
     if(large)
-      std::cerr << "diffuv: " << name << (detail.empty() ? "" : " (" + detail + ")") << " done in " << ms / 1000.
-                << " s" << std::endl;
+      std::cerr << "diffuv: " << name << " done in " << duration(ms) << (detail.empty() ? "" : " (" + detail + ")")
+                << std::endl;
   }
   void done(const std::string& name, const std::string& detail = {})
   {
@@ -285,11 +295,10 @@ struct Stage_clock {
   }
   std::string summary() const
   {
-    std::ostringstream s;
-    s.precision(3);
+    std::string s;
     for(std::size_t i = 0; i < stages.size(); ++i)
-      s << (i ? ", " : "") << stages[i].first << ' ' << stages[i].second << " ms";
-    return s.str();
+      s += (i ? ", " : "") + stages[i].first + ' ' + duration(stages[i].second);
+    return s;
   }
 };
 
@@ -300,6 +309,11 @@ void run_param(const Param_options& options)
     throw CLI::ValidationError("--corners", "applies to a disc mesh without --labels");
   const std::string mesh_path = options.mesh.empty() ? default_mesh("cow.off") : options.mesh;
   Stage_clock stages;
+  // A file this large takes seconds to read: say so before, not only after.
+  std::error_code size_error;
+  const auto file_size = std::filesystem::file_size(mesh_path, size_error);
+  if(!size_error && file_size > 50'000'000)
+    std::cerr << "diffuv: reading " << mesh_path << " (" << file_size / 1'000'000 << " MB)" << std::endl;
   const Input_mesh in = read_input(mesh_path, options.patches);
   stages.large = in.report.vertices > 1000000;
   stages.done("read", std::to_string(in.report.vertices) + " vertices");
@@ -313,13 +327,17 @@ void run_param(const Param_options& options)
   std::vector<double> times;
   diffuv::Repair_options repair;
   repair.enabled = !options.no_repair;
+  // More threads than cores gain nothing, and oneTBB would warn about them.
+  const std::size_t cores = (std::max)(1u, std::thread::hardware_concurrency());
+  const std::size_t threads = options.threads == 0 ? 0 : (std::min)(options.threads, cores);
   for(int run = 0; run < options.runs; ++run) {
     result = options.corners.empty()
-                 ? parameterize_by_patches(in, options.patches, options.distance, repair, options.threads)
+                 ? parameterize_by_patches(in, options.patches, options.distance, repair, threads)
                  : parameterize_with_corners(in, corners, options.corners, options.distance, repair);
     times.push_back(result.milliseconds);
   }
-  stages.add("patches", result.patches_ms, std::to_string(result.seg.number_of_patches()) + " patches");
+  stages.add("patches", result.patches_ms,
+             std::to_string(result.seg.number_of_patches()) + (result.seg.number_of_patches() == 1 ? " patch" : " patches"));
   stages.add("map", result.milliseconds - result.patches_ms,
              options.runs > 1 ? "last of " + std::to_string(options.runs) + " runs" : std::string());
   std::sort(times.begin(), times.end());
@@ -376,7 +394,8 @@ void run_param(const Param_options& options)
               << ' ' << c[3].idx() << " (from " << options.corners << ")\n";
   } else {
     const auto& r = result.patching;
-    std::cout << result.seg.number_of_patches() << " patches, " << options.distance << " distances: "
+    std::cout << result.seg.number_of_patches() << (result.seg.number_of_patches() == 1 ? " patch, " : " patches, ")
+              << options.distance << " distances: "
               << (!in.label_source.empty() ? in.label_source : patch_source(r, options.patches.patches))
               << "; " << r.merged << " merged, " << r.cut << " cut into discs, " << r.caps_split << " caps split\n";
   }
@@ -415,9 +434,9 @@ void run_param(const Param_options& options)
   if(failed > 0)
     std::cerr << "diffuv: warning: " << failed << " of " << result.patches.size()
               << " patches cannot be parameterized (see the table); their faces have no (u,v)\n";
-  std::cout << "time: " << total_ms << " ms in all (median of " << options.runs << "), of which "
-            << patch_ms << " ms mapping the patches (summed over " << (options.threads == 1 ? "1 thread" : "the threads")
-            << ")\n";
+  std::cout << "time: " << Stage_clock::duration(total_ms) << " to make and map the patches (median of "
+            << options.runs << (options.runs == 1 ? " run" : " runs") << "); the patches' own times (column time_ms) add up to "
+            << Stage_clock::duration(patch_ms) << (options.threads == 1 ? "" : " over all threads") << '\n';
   std::cout << "stages: " << stages.summary() << '\n';
   std::cout << "wrote";
   for(const auto& p : out.paths()) std::cout << ' ' << p;
@@ -431,6 +450,11 @@ namespace {
 // The options `param` and `render` share: what is parameterized, and how it is drawn.
 void add_common_options(CLI::App* cmd, Param_options& o)
 {
+  cmd->add_option("--threads", o.threads,
+                  "Threads mapping the patches: 0 = every core, 1 = one after the other (the results are the same; "
+                  "more threads than cores are not used)")
+      ->check(CLI::Range(std::size_t(0), std::size_t(1024)))
+      ->capture_default_str();
   cmd->add_option("mesh", o.mesh,
                   "Triangle mesh (OFF, OBJ, PLY, STL). A disc is one patch; any other mesh is cut into disc patches. "
                   "Default: CGAL's cow.off");
@@ -496,10 +520,6 @@ void add_param_command(CLI::App& app)
   add_common_options(cmd, *options);
   cmd->add_flag("--svg", options->svg, "Also write each patch's uv layout as OUTPUT/<mesh>.patch<N>.svg (flipped "
                                       "triangles in red, the four sides in colour)");
-  cmd->add_option("--threads", options->threads,
-                  "Threads mapping the patches: 0 = every core, 1 = one after the other (the results are the same)")
-      ->check(CLI::Range(std::size_t(0), std::size_t(1024)))
-      ->capture_default_str();
   cmd->add_option("--runs", options->runs, "Run the parameterization N times and report the median time")
       ->check(CLI::Range(1, 1000))
       ->capture_default_str();
