@@ -447,11 +447,7 @@ Stages staged_pipeline(const Case& c, bool repair)
       pgraph.build(m, c.seg.patch_faces[p],
                    [&](face_descriptor f) { return f != Mesh::null_face() && c.seg.face_patch[get(findex, f)] == p; },
                    lengths);
-      using Local = diffuv::Patch_graph<Mesh>::vertex_descriptor;
-      diffuv::Four_sides<Local> ls;
-      for(auto [from, to] : {std::pair{&r.sides.u1, &ls.u1}, std::pair{&r.sides.u2, &ls.u2},
-                             std::pair{&r.sides.v1, &ls.v1}, std::pair{&r.sides.v2, &ls.v2}})
-        for(vertex_descriptor v : *from) to->push_back(pgraph.local(m, v));
+      const auto ls = pgraph.local_sides(m, r.sides);
       lap(s.ffg);
       std::vector<Point_2> uv(pgraph.number_of_vertices());
       diffuv::Diffusion_coordinates<diffuv::Patch_graph<Mesh>::Graph, Heap, diffuv::Graph_distance_tag> coordinates(

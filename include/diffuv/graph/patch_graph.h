@@ -11,6 +11,8 @@
 #ifndef DIFFUV_GRAPH_PATCH_GRAPH_H
 #define DIFFUV_GRAPH_PATCH_GRAPH_H
 
+#include <diffuv/patches/four_sides.h>
+
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 
@@ -21,6 +23,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <stdexcept>
 #include <utility>
 #include <vector>
 
@@ -98,6 +101,26 @@ public:
     if(i >= local_of_.size()) return none;
     const vertex_descriptor id = local_of_[i];
     return id < mesh_vertex_.size() && mesh_vertex_[id] == v ? id : none;
+  }
+
+  /// The four sides of the patch in local ids (corners included).
+  /// \throws std::logic_error if a side vertex is not in the patch
+  Four_sides<vertex_descriptor> local_sides(const TriangleMesh& tm, const Four_sides<Mesh_vertex>& sides) const
+  {
+    Four_sides<vertex_descriptor> out;
+    auto to_local = [&](const std::vector<Mesh_vertex>& side, std::vector<vertex_descriptor>& ids) {
+      ids.reserve(side.size());
+      for(Mesh_vertex v : side) {
+        ids.push_back(local(tm, v));
+        if(ids.back() == none) throw std::logic_error("Patch_graph: a side vertex is not a vertex of its patch");
+      }
+    };
+    to_local(sides.u1, out.u1);
+    to_local(sides.u2, out.u2);
+    to_local(sides.v1, out.v1);
+    to_local(sides.v2, out.v2);
+    for(std::size_t k = 0; k < 4; ++k) out.corners[k] = local(tm, sides.corners[k]);
+    return out;
   }
 
 private:

@@ -24,10 +24,8 @@
 #include <tbb/task_arena.h>
 #endif
 
-#include <algorithm>
 #include <chrono>
 #include <cstddef>
-#include <stdexcept>
 #include <type_traits>
 #include <vector>
 
@@ -149,17 +147,7 @@ std::vector<Patch_result<TriangleMesh>> parameterize_patches(const TriangleMesh&
       pg.build(tm, seg.patch_faces[p],
                [&](auto f) { return f != boost::graph_traits<TriangleMesh>::null_face() && seg.face_patch[get(findex, f)] == p; },
                lengths);
-      using Local = typename Patch_graph<TriangleMesh>::vertex_descriptor;
-      Four_sides<Local> local_sides;
-      auto to_local = [&](const std::vector<vertex_descriptor>& side, std::vector<Local>& out) {
-        out.reserve(side.size());
-        for(vertex_descriptor v : side) out.push_back(pg.local(tm, v));
-        return std::find(out.begin(), out.end(), Patch_graph<TriangleMesh>::none) == out.end();
-      };
-      if(!(to_local(r.sides.u1, local_sides.u1) && to_local(r.sides.u2, local_sides.u2) &&
-           to_local(r.sides.v1, local_sides.v1) && to_local(r.sides.v2, local_sides.v2))) {
-        throw std::logic_error("parameterize_patches: a side vertex is not a vertex of its patch");
-      }
+      const auto local_sides = pg.local_sides(tm, r.sides);
       chart.uv.resize(pg.number_of_vertices());
       Diffusion_coordinates<typename Patch_graph<TriangleMesh>::Graph, HeapTag, Graph_distance_tag> coordinates(
           pg.graph());
