@@ -5,6 +5,7 @@
 #include <diffuv/parameterization/parameterize_disc.h>
 #include <diffuv/parameterization/parameterize_patches.h>
 #include <diffuv/patches/disc_patches.h>
+#include <diffuv/patches/flat_faces.h>
 #include <diffuv/graph/patch_graph.h>
 #include <diffuv/patches/region_sides.h>
 
@@ -228,10 +229,13 @@ TEST(Patches, NonDiscRegionsAreCutIntoDiscsOrReported)
   ASSERT_EQ(sr.not_discs.size(), 1u);
   EXPECT_EQ(s.patch_label[sr.not_discs.front()], 1);
 
-  // Default: the annulus is cut into disc pieces, each of label 1, numbered parts.
+  // Default: the annulus is cut into disc pieces, each of label 1, numbered
+  // parts (no face handed across regions afterwards, to count them).
   Seg seg;
   diffuv::Patching_report report;
-  ASSERT_TRUE(diffuv::disc_patches(m, labels, m.points(), seg, diffuv::Patching_options(), &report).ok());
+  diffuv::Patching_options cut;
+  cut.hand_off_flat_faces = false;
+  ASSERT_TRUE(diffuv::disc_patches(m, labels, m.points(), seg, cut, &report).ok());
   EXPECT_EQ(report.cut, 1u);
   std::size_t band_faces = 0, pieces = 0;
   for(std::size_t p = 0; p < seg.number_of_patches(); ++p) {
@@ -261,7 +265,9 @@ TEST(Patches, CapsAreSplitInTwo)
 
   Seg seg;
   diffuv::Patching_report report;
-  ASSERT_TRUE(diffuv::disc_patches(m, labels, m.points(), seg, diffuv::Patching_options(), &report).ok());
+  diffuv::Patching_options split;
+  split.hand_off_flat_faces = false;  // to count the faces of each cap's halves
+  ASSERT_TRUE(diffuv::disc_patches(m, labels, m.points(), seg, split, &report).ok());
   EXPECT_EQ(report.caps_split, 2u);
   ASSERT_EQ(seg.number_of_patches(), 4u);
   const std::vector<int> expected_labels = {0, 0, 1, 1}, expected_parts = {1, 2, 1, 2};
@@ -322,6 +328,78 @@ void expect_everything_mapped(const std::string& name)
 TEST(AutomaticPatches, CowManAndGenusThreeElephantAreFullyMapped)
 {
   for(const char* name : {"cow.off", "man.off", "elephant.off"}) expect_everything_mapped(name);
+}
+
+// The faces of patch p with all three vertices on one side, counted naively.
+std::size_t flat_faces_by_search(const Mesh& m, const Seg& seg, std::size_t p)
+{
+  diffuv::Four_sides<vertex_descriptor> sides;
+  if(!diffuv::region_sides(m, seg, p, m.points(), sides).ok()) return std::numeric_limits<std::size_t>::max();
+  std::size_t flat = 0;
+  for(auto f : seg.patch_faces[p])
+    for(const auto* side : {&sides.u1, &sides.u2, &sides.v1, &sides.v2}) {
+      bool all_on_side = true;
+      for(auto v : vertices_around_face(m.halfedge(f), m))
+        all_on_side = all_on_side && std::find(side->begin(), side->end(), v) != side->end();
+      if(all_on_side) {
+        ++flat;
+        break;
+      }
+    }
+  return flat;
+}
+
+// Issue #5: where diffuv chooses the patches, no face may be left flat (three
+// vertices on one side). On man, elephant and dino a corner move cannot help
+// some junction faces; they are handed to a neighbouring patch instead.
+TEST(AutomaticPatches, NoFaceIsLeftFlatOnOneSide)
+{
+  for(const char* name : {"man.off", "elephant.off", "dino.off"}) {
+    const Mesh& m = cgal_mesh(name);
+    diffuv::Patching_options keep;
+    keep.hand_off_flat_faces = false;
+    Seg kept, handed;
+    diffuv::Patching_report kept_report, handed_report;
+    ASSERT_TRUE(diffuv::disc_patches(m, {}, m.points(), kept, keep, &kept_report).ok()) << name;
+    ASSERT_TRUE(diffuv::disc_patches(m, {}, m.points(), handed, diffuv::Patching_options(), &handed_report).ok()) << name;
+    EXPECT_EQ(kept_report.flat_faces_handed, 0u);
+    ASSERT_EQ(kept.number_of_patches(), handed.number_of_patches()) << name;
+
+    std::size_t flat_before = 0, changed = 0;
+    for(std::size_t p = 0; p < kept.number_of_patches(); ++p) {
+      flat_before += flat_faces_by_search(m, kept, p);
+      // Every patch still a disc, and no face left flat.
+      ASSERT_TRUE(diffuv::check_patch_disc(m, handed, p).ok()) << name << " patch " << p;
+      EXPECT_EQ(flat_faces_by_search(m, handed, p), 0u) << name << " patch " << p;
+      diffuv::Four_sides<vertex_descriptor> sides;
+      ASSERT_TRUE(diffuv::region_sides(m, handed, p, m.points(), sides).ok());
+      EXPECT_TRUE(diffuv::flat_faces(m, handed, p, sides).empty()) << name << " patch " << p;
+    }
+    EXPECT_GT(flat_before, 0u) << name << ": the case this test is about is gone";
+    // Only the handed faces changed patch, each to a patch it touched across an edge.
+    for(auto f : faces(m)) {
+      const std::size_t from = kept.face_patch[f.idx()], to = handed.face_patch[f.idx()];
+      if(from == to) continue;
+      ++changed;
+      bool touched = false;
+      for(auto h : halfedges_around_face(m.halfedge(f), m)) {
+        const auto g = m.face(m.opposite(h));
+        touched = touched || (g != Mesh::null_face() && kept.face_patch[g.idx()] == to);
+      }
+      EXPECT_TRUE(touched) << name << " face " << f;
+    }
+    EXPECT_EQ(changed, handed_report.flat_faces_handed) << name;
+    EXPECT_GE(changed, 1u) << name;
+
+    // The maps of those patches have no forced degenerate triangle either.
+    diffuv::Uv_atlas<Mesh> atlas(m);
+    const auto results = diffuv::parameterize_patches(m, handed, m.points(), atlas);
+    for(std::size_t p = 0; p < results.size(); ++p) {
+      ASSERT_TRUE(results[p].status.ok()) << name << " patch " << p;
+      EXPECT_EQ(results[p].repair.forced_degenerate, 0u) << name << " patch " << p;
+      EXPECT_EQ(results[p].repair.remaining_folded_faces, 0u) << name << " patch " << p;
+    }
+  }
 }
 
 TEST(AutomaticPatches, DeterministicAndIndependentOfVertexAndFaceOrder)

@@ -39,6 +39,7 @@ struct Patch_cli_options {
   std::string labels;
   std::size_t patches = 12;
   bool no_split_caps = false;
+  bool keep_flat_faces = false;
   bool strict = false;
 };
 
@@ -62,6 +63,9 @@ inline void add_patch_options(CLI::App* cmd, Patch_cli_options& o)
   cmd->add_flag("--no-split-caps", o.no_split_caps,
                 "Keep caps (patches with one neighbour all around, like a hand or an ear) whole instead of splitting "
                 "them in two");
+  cmd->add_flag("--keep-flat-faces", o.keep_flat_faces,
+                "Keep every face in its region even when its three vertices end up on one side of the patch (flat in "
+                "any map onto the square) instead of handing it to a neighbouring patch");
   cmd->add_flag("--strict", o.strict, "Report a region that is not a disc instead of cutting it into discs");
 }
 
@@ -132,6 +136,7 @@ inline diffuv::Segmentation<Mesh> make_patches(const Input_mesh& in, const Patch
 {
   diffuv::Patching_options options;
   options.split_caps = !o.no_split_caps;
+  options.hand_off_flat_faces = !o.keep_flat_faces;
   options.strict = o.strict;
   options.automatic.patches = o.patches;
   diffuv::Segmentation<Mesh> seg;

@@ -397,7 +397,9 @@ void run_param(const Param_options& options)
     std::cout << result.seg.number_of_patches() << (result.seg.number_of_patches() == 1 ? " patch, " : " patches, ")
               << options.distance << " distances: "
               << (!in.label_source.empty() ? in.label_source : patch_source(r, options.patches.patches))
-              << "; " << r.merged << " merged, " << r.cut << " cut into discs, " << r.caps_split << " caps split\n";
+              << "; " << r.merged << " merged, " << r.cut << " cut into discs, " << r.caps_split << " caps split";
+    if(r.flat_faces_handed) std::cout << ", " << r.flat_faces_handed << " flat faces handed to a neighbour";
+    std::cout << "\n";
   }
   std::printf("%-6s %6s %8s %8s %-10s %8s %6s %7s %5s %6s %8s %9s %9s %9s %9s %8s %9s %9s\n", "patch", "label",
               "vertices", "faces", "corners", "time_ms", "moved", "flipped", "degen", "forced", "overlaps", "angle_avg", "angle_max", "area_avg",

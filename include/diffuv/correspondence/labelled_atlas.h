@@ -30,7 +30,14 @@ struct Labelled_atlas_options {
 
   bool clean = true;                  ///< clean the labels first (`clean_labels()`)
   Label_cleaning_options cleaning;
-  Patching_options patching;          ///< cut of non-disc regions, split of caps
+  /// Cut of non-disc regions, split of caps. No flat face is handed to a
+  /// neighbouring patch here (`hand_off_flat_faces`), for the reason below:
+  /// the two meshes' patches would differ where their tessellations differ.
+  Patching_options patching = [] {
+    Patching_options o;
+    o.hand_off_flat_faces = false;
+    return o;
+  }();
   /// Move corners onto ear tips so that no triangle is flat (`region_sides()`):
   /// off here. A move can take a corner half a side away, and two
   /// tessellations have their ears in different places, so the corners (and

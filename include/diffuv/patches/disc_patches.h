@@ -4,6 +4,7 @@
 
 #include <diffuv/error.h>
 #include <diffuv/patches/disc_topology.h>
+#include <diffuv/patches/flat_faces.h>
 #include <diffuv/patches/segmentation.h>
 #include <diffuv/patches/split_patches.h>
 
@@ -18,6 +19,9 @@ namespace diffuv {
 struct Patching_options {
   bool split_caps = true;        ///< split caps (one neighbour all around) in two, as the paper recommends
   bool strict = false;           ///< report a labelled region that is not a disc instead of cutting it
+  /// hand a face left flat by its patch's four sides to a neighbouring patch
+  /// (`hand_flat_faces_to_neighbours()`)
+  bool hand_off_flat_faces = true;
   Voronoi_options automatic;     ///< automatic patches: how many to start from
 };
 
@@ -29,6 +33,7 @@ struct Patching_report {
   std::size_t merged = 0;          ///< patches with fewer than four boundary vertices merged into a neighbour
   std::size_t cut = 0;             ///< non-disc patches cut into discs
   std::size_t caps_split = 0;      ///< caps split in two
+  std::size_t flat_faces_handed = 0;  ///< faces flat on one side of their patch, handed to a neighbouring patch
   std::vector<std::size_t> not_discs;  ///< patches left that are not discs (none unless `strict` or a cut failed)
 };
 
@@ -39,7 +44,9 @@ struct Patching_report {
 /// neighbour; a patch that is not a disc is cut into discs (or, with `strict`,
 /// reported); caps are split in two. Without labels (empty vector), each
 /// connected component that is a disc is one patch and any other component is
-/// cut automatically (`voronoi_discs()`).
+/// cut automatically (`voronoi_discs()`). Last, a face that the patch's four
+/// sides would leave flat is handed to a neighbouring patch
+/// (`hand_flat_faces_to_neighbours()`, `hand_off_flat_faces`).
 ///
 /// \returns `not_a_disc` (detail: the first bad patch) if a patch that is not a
 ///          disc is left, `ok` otherwise; `seg` is filled in both cases
@@ -107,6 +114,7 @@ Status disc_patches(const TriangleMesh& tm, std::vector<int> face_labels, Vertex
     for(auto f : caps)
       if(split_cap(tm, seg, seg.face_patch[get(findex, f)], vpm)) ++r.caps_split;
   }
+  if(options.hand_off_flat_faces) r.flat_faces_handed = hand_flat_faces_to_neighbours(tm, seg, vpm);
   // Indices of the bad patches may have moved with the splits: recompute them.
   r.not_discs.clear();
   for(std::size_t p = 0; p < seg.number_of_patches(); ++p)

@@ -1,0 +1,163 @@
+// diffuv: faces that every map onto the square flattens, and handing them to
+// a neighbouring patch.
+//
+// A face whose three vertices lie on one side of its patch is flat in any map
+// that sends that side onto a straight edge of the square (issue #5).
+// `region_sides()` first tries to move a corner onto the face's middle vertex
+// (`separate_flat_triangles()`); where that would leave another face flat
+// (a junction face between two runs that the side merges, measured on man),
+// the face changes patch instead: it joins a neighbour across one of its
+// border edges, if that leaves fewer flat faces in every patch it touches.
+#ifndef DIFFUV_PATCHES_FLAT_FACES_H
+#define DIFFUV_PATCHES_FLAT_FACES_H
+
+#include <diffuv/patches/four_sides.h>
+#include <diffuv/patches/region_sides.h>
+#include <diffuv/patches/segmentation.h>
+
+#include <CGAL/boost/graph/iterator.h>
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <utility>
+#include <vector>
+
+namespace diffuv {
+
+/// The faces of patch `p` whose three vertices all lie on one of `sides`
+/// (a corner lies on its two sides).
+template <class TriangleMesh>
+std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>
+flat_faces(const TriangleMesh& tm, const Segmentation<TriangleMesh>& seg, std::size_t p,
+           const Four_sides<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& sides)
+{
+  using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
+  // Border vertex -> bit set of its sides, as a sorted vector (a patch's border is short).
+  std::vector<std::pair<vertex_descriptor, std::uint8_t>> side_mask;
+  const std::array<const std::vector<vertex_descriptor>*, 4> side_of = {&sides.u1, &sides.u2, &sides.v1, &sides.v2};
+  for(std::size_t s = 0; s < 4; ++s)
+    for(vertex_descriptor v : *side_of[s]) side_mask.emplace_back(v, static_cast<std::uint8_t>(1u << s));
+  std::sort(side_mask.begin(), side_mask.end());
+  auto mask_of = [&](vertex_descriptor v) {
+    std::uint8_t m = 0;
+    for(auto it = std::lower_bound(side_mask.begin(), side_mask.end(), std::make_pair(v, std::uint8_t(0)));
+        it != side_mask.end() && it->first == v; ++it)
+      m |= it->second;
+    return m;
+  };
+  std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> flat;
+  for(auto f : seg.patch_faces[p]) {
+    std::uint8_t common = 0xF;
+    for(vertex_descriptor v : CGAL::vertices_around_face(halfedge(f, tm), tm)) common &= mask_of(v);
+    if(common != 0) flat.push_back(f);
+  }
+  return flat;
+}
+
+/// Hands each face that stays flat after `region_sides()` (corners moved off
+/// ears included) to a neighbouring patch across one of its edges, when the
+/// patches it touches all stay discs with four sides and have fewer flat
+/// faces together. Patches are visited in order, a patch's flat faces by
+/// their centroids, neighbours in patch order, so the result depends only on
+/// the segmentation and the geometry. Labels and the number and
+/// order of patches are unchanged; a handed face takes its new patch's label.
+///
+/// \returns how many faces changed patch
+template <class TriangleMesh, class VertexPointMap>
+std::size_t hand_flat_faces_to_neighbours(const TriangleMesh& tm, Segmentation<TriangleMesh>& seg, VertexPointMap vpm,
+                                          std::size_t max_rounds = 4)
+{
+  using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
+  constexpr std::size_t unusable = std::numeric_limits<std::size_t>::max();
+  auto findex = get(boost::face_index, tm);
+
+  // The flat faces of patch q, or `unusable` when it is no disc or has no four sides.
+  std::vector<face_descriptor> flat;
+  auto count_flat = [&](std::size_t q) -> std::size_t {
+    flat.clear();
+    if(!check_patch_disc(tm, seg, q)) return unusable;
+    Four_sides<typename boost::graph_traits<TriangleMesh>::vertex_descriptor> sides;
+    if(!region_sides(tm, seg, q, vpm, sides)) return unusable;
+    flat = flat_faces(tm, seg, q, sides);
+    return flat.size();
+  };
+  // Moves face f from patch `from` to the end of patch `to`; returns its old position.
+  auto move = [&](face_descriptor f, std::size_t from, std::size_t to) {
+    auto& faces_from = seg.patch_faces[from];
+    const auto at = std::find(faces_from.begin(), faces_from.end(), f);
+    const auto position = static_cast<std::size_t>(at - faces_from.begin());
+    faces_from.erase(at);
+    seg.patch_faces[to].push_back(f);
+    seg.face_patch[get(findex, f)] = to;
+    return position;
+  };
+  auto move_back = [&](face_descriptor f, std::size_t from, std::size_t to, std::size_t position) {
+    seg.patch_faces[to].pop_back();
+    seg.patch_faces[from].insert(seg.patch_faces[from].begin() + static_cast<std::ptrdiff_t>(position), f);
+    seg.face_patch[get(findex, f)] = from;
+  };
+
+  std::size_t handed = 0;
+  for(std::size_t round = 0; round < max_rounds; ++round) {
+    std::size_t this_round = 0;
+    for(std::size_t p = 0; p < seg.number_of_patches(); ++p) {
+      if(count_flat(p) == unusable || flat.empty()) continue;
+      // In the order of their centroids, not of their indices: the result
+      // then does not depend on the face numbering.
+      std::vector<std::pair<std::array<double, 3>, face_descriptor>> candidates;
+      for(face_descriptor f : flat) {
+        std::array<double, 3> c{0., 0., 0.};
+        for(auto v : CGAL::vertices_around_face(halfedge(f, tm), tm)) {
+          const auto q = get(vpm, v);
+          c[0] += CGAL::to_double(q.x());
+          c[1] += CGAL::to_double(q.y());
+          c[2] += CGAL::to_double(q.z());
+        }
+        candidates.emplace_back(c, f);
+      }
+      std::sort(candidates.begin(), candidates.end(),
+                [](const auto& a, const auto& b) { return a.first < b.first; });
+      for(const auto& candidate : candidates) {
+        const face_descriptor f = candidate.second;
+        if(seg.face_patch[get(findex, f)] != p) continue;
+        // Every patch across an edge of f: their sides may change with the move.
+        std::vector<std::size_t> touched;
+        for(auto h : CGAL::halfedges_around_face(halfedge(f, tm), tm)) {
+          const face_descriptor g = face(opposite(h, tm), tm);
+          if(g != boost::graph_traits<TriangleMesh>::null_face() && seg.face_patch[get(findex, g)] != p)
+            touched.push_back(seg.face_patch[get(findex, g)]);
+        }
+        std::sort(touched.begin(), touched.end());
+        touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
+        auto total_flat = [&]() {
+          std::size_t total = count_flat(p);
+          for(std::size_t q : touched) {
+            if(total == unusable) break;
+            const std::size_t c = count_flat(q);
+            total = c == unusable ? unusable : total + c;
+          }
+          return total;
+        };
+        const std::size_t before = total_flat();
+        if(before == unusable) continue;
+        for(std::size_t q : touched) {
+          const std::size_t position = move(f, p, q);
+          if(total_flat() < before) {
+            ++this_round;
+            break;
+          }
+          move_back(f, p, q, position);
+        }
+      }
+    }
+    handed += this_round;
+    if(this_round == 0) break;
+  }
+  return handed;
+}
+
+} // namespace diffuv
+
+#endif // DIFFUV_PATCHES_FLAT_FACES_H
