@@ -51,7 +51,7 @@ Point_3 embed(const Point_2& xy)
 // index i + (nx+1) j; square (i,j) gives faces 2(i + nx j) (lower right,
 // (i,j)(i+1,j)(i+1,j+1)) and 2(i + nx j) + 1 (upper left), both
 // counter-clockwise in plane coordinates. Returns the plane coordinates.
-std::vector<Point_2> make_grid(Mesh& m, int nx, int ny, double h)
+std::vector<Point_2> fill_square_grid(Mesh& m, int nx, int ny, double h)
 {
   std::vector<Point_2> xy;
   std::vector<Vertex> v;
@@ -84,7 +84,7 @@ diffuv::Distortion_summary measure_affine(double a, double b, double c, double d
                                           std::vector<diffuv::Triangle_distortion>* per_face)
 {
   Mesh m;
-  const std::vector<Point_2> xy = make_grid(m, 4, 3, 0.25);
+  const std::vector<Point_2> xy = fill_square_grid(m, 4, 3, 0.25);
   Uv_map uv = add_uv(m);
   set_affine_uv(m, uv, xy, a, b, c, d, 0.3, -1.7);
   return diffuv::measure_distortion(m, all_faces(m), m.points(), uv, per_face);
@@ -306,7 +306,7 @@ TEST(Metrics, OneFlippedTriangle)
   // 2 x 1 unit squares. Vertex (2,0) belongs to face 2 only; moving it to
   // (1.2, 0.8) turns face 2 clockwise, inside face 3.
   Mesh m;
-  const std::vector<Point_2> xy = make_grid(m, 2, 1, 1.0);
+  const std::vector<Point_2> xy = fill_square_grid(m, 2, 1, 1.0);
   Uv_map uv = add_uv(m);
   set_affine_uv(m, uv, xy, 1, 0, 0, 1);
   put(uv, Vertex(2), Point_2(1.2, 0.8));
@@ -377,7 +377,7 @@ TEST(Metrics, ValidPlanarGridsHaveNoOverlaps)
   // The identity grid: every pair of neighbours touches exactly along an edge
   // or at a vertex, and many bounding boxes share a side.
   Mesh m;
-  const std::vector<Point_2> xy = make_grid(m, 20, 20, 0.05);
+  const std::vector<Point_2> xy = fill_square_grid(m, 20, 20, 0.05);
   Uv_map uv = add_uv(m);
   set_affine_uv(m, uv, xy, 1, 0, 0, 1);
   EXPECT_EQ(diffuv::count_overlapping_pairs(m, all_faces(m), uv), 0u);
@@ -399,7 +399,7 @@ TEST(Metrics, DegenerateTriangleIsReportedAndSkipped)
 {
   // Vertex (2,0) of the 2 x 1 grid moved onto the segment (1,0)-(2,1): face 2 collapses.
   Mesh m;
-  const std::vector<Point_2> xy = make_grid(m, 2, 1, 1.0);
+  const std::vector<Point_2> xy = fill_square_grid(m, 2, 1, 1.0);
   Uv_map uv = add_uv(m);
   set_affine_uv(m, uv, xy, 1, 0, 0, 1);
   put(uv, Vertex(2), Point_2(1.5, 0.5));
@@ -420,7 +420,7 @@ TEST(Metrics, DegenerateTriangleIsReportedAndSkipped)
 TEST(Metrics, PerFaceFollowsRangeOrder)
 {
   Mesh m;
-  const std::vector<Point_2> xy = make_grid(m, 3, 3, 1.0);
+  const std::vector<Point_2> xy = fill_square_grid(m, 3, 3, 1.0);
   Uv_map uv = add_uv(m);
   for(Vertex v : m.vertices()) // a non-affine map: faces differ
     put(uv, v, Point_2(xy[v.idx()].x() * (1 + 0.1 * xy[v.idx()].y()), xy[v.idx()].y() + 0.05 * xy[v.idx()].x() * xy[v.idx()].x()));

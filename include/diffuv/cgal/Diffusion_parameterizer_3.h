@@ -54,7 +54,8 @@ namespace diffuv {
 /// - a distance computation that failed (`empty_source_range`, `empty_side`,
 ///   `negative_weight`, `unreachable_vertices`: NaN or infinite coordinates,
 ///   for instance) -> `ERROR_CANNOT_SOLVE_LINEAR_SYSTEM`, CGAL's "the solver failed";
-/// - `not_injective` (a map that still folds) -> `ERROR_NO_1_TO_1_MAPPING`.
+/// - `not_injective` (a map that still folds) -> `ERROR_NO_1_TO_1_MAPPING`;
+/// - `no_labels` (not an input of this parameterizer) -> `ERROR_WRONG_PARAMETER`.
 /// A switch without default: the compiler (-Wswitch) flags a code added to
 /// `Status_code` and not mapped here; such a code gives `ERROR_WRONG_PARAMETER`.
 inline CGAL::Surface_mesh_parameterization::Error_code to_cgal_error_code(Status_code code)
@@ -79,6 +80,7 @@ inline CGAL::Surface_mesh_parameterization::Error_code to_cgal_error_code(Status
     case Status_code::negative_weight:
     case Status_code::unreachable_vertices: return SMP::ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
     case Status_code::not_injective: return SMP::ERROR_NO_1_TO_1_MAPPING;
+    case Status_code::no_labels: return SMP::ERROR_WRONG_PARAMETER;  // labels are not this parameterizer's input
   }
   return SMP::ERROR_WRONG_PARAMETER;
 }
