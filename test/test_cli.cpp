@@ -268,6 +268,30 @@ TEST_F(Tool, SegmentWritesPatchesThatReadBackAsLabelsAndAsPaint)
   EXPECT_TRUE(slurp(dir_ / "b" / "cow.patches.patches.txt") == slurp(labels)); // output named after the PLY
 }
 
+// Issue #5: man's two junction faces left flat by their sides go to a
+// neighbouring patch; --keep-flat-faces keeps them (and says nothing).
+TEST_F(Tool, SegmentHandsFlatFacesToANeighbourUnlessKept)
+{
+  const std::string man = data_path("meshes/man.off");
+  const Tool_run handed = run("segment " + man + " -o " + (dir_ / "a").string());
+  ASSERT_EQ(handed.code, 0) << handed.err;
+  EXPECT_NE(handed.out.find(", 2 flat faces handed to a neighbour"), std::string::npos) << handed.out;
+  const Tool_run kept = run("segment " + man + " --keep-flat-faces -o " + (dir_ / "b").string());
+  ASSERT_EQ(kept.code, 0) << kept.err;
+  EXPECT_EQ(kept.out.find("handed"), std::string::npos) << kept.out;
+
+  // The two label files differ in exactly two faces.
+  std::istringstream a(slurp(dir_ / "a" / "man.patches.txt")), b(slurp(dir_ / "b" / "man.patches.txt"));
+  std::string la, lb;
+  std::size_t lines = 0, different = 0;
+  while(std::getline(a, la) && std::getline(b, lb)) {
+    ++lines;
+    different += la != lb;
+  }
+  EXPECT_EQ(lines, 34986u);
+  EXPECT_EQ(different, 2u);
+}
+
 TEST_F(Tool, StrictReportsARegionThatIsNotADisc)
 {
   // Two labels on nefertiti: a band across the middle is fine (a disc), but a

@@ -157,6 +157,7 @@ void run_compare(const Compare_options& options)
   diffuv::Segmentation<Mesh> seg;
   std::vector<diffuv::Four_sides<vertex_descriptor>> sides;
   std::vector<diffuv::Status> patch_status;
+  std::size_t flat_faces_handed = 0;  // faces flat on one side of their patch, handed to a neighbour
   if(!options.corners.empty()) {
     const auto corners =
         diffuv::selection_vertices(mesh, diffuv::read_selection_file(options.corners), options.corners);
@@ -174,6 +175,7 @@ void run_compare(const Compare_options& options)
   } else {
     diffuv::Patching_report report;
     seg = make_patches(in, options.patches, report);
+    flat_faces_handed = report.flat_faces_handed;
     sides.resize(seg.number_of_patches());
     for(std::size_t p = 0; p < seg.number_of_patches(); ++p) {
       diffuv::Status status = diffuv::check_patch_disc(mesh, seg, p);
@@ -259,7 +261,11 @@ void run_compare(const Compare_options& options)
   std::cout << "diffuv compare " << in.path << ": " << num_vertices(mesh) << " vertices, " << num_faces(mesh)
             << " faces, " << seg.number_of_patches() << (seg.number_of_patches() == 1 ? " patch" : " patches")
             << (options.corners.empty() ? "" : " (corners from " + options.corners + ")") << "; median of "
-            << options.runs << (options.runs == 1 ? " run" : " runs") << ", times summed over patches\n";
+            << options.runs << (options.runs == 1 ? " run" : " runs") << ", times summed over patches";
+  if(flat_faces_handed)
+    std::cout << "; " << flat_faces_handed << (flat_faces_handed == 1 ? " flat face" : " flat faces")
+              << " handed to a neighbour";
+  std::cout << "\n";
   std::printf("%-18s %10s %7s %7s %5s %8s %9s %9s %9s %9s %8s %9s %7s\n", "method", "time_ms", "failed", "flipped",
               "degen", "overlaps", "angle_avg", "angle_max", "area_avg", "area_max", "L2", "moved", "1-to-1");
   for(std::size_t k = 0; k < methods.size(); ++k) {
