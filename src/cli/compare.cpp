@@ -262,9 +262,7 @@ void run_compare(const Compare_options& options)
             << " faces, " << seg.number_of_patches() << (seg.number_of_patches() == 1 ? " patch" : " patches")
             << (options.corners.empty() ? "" : " (corners from " + options.corners + ")") << "; median of "
             << options.runs << (options.runs == 1 ? " run" : " runs") << ", times summed over patches";
-  if(flat_faces_handed)
-    std::cout << "; " << flat_faces_handed << (flat_faces_handed == 1 ? " flat face" : " flat faces")
-              << " handed to a neighbour";
+  if(flat_faces_handed) std::cout << "; " << flat_faces_handed_clause(flat_faces_handed);
   std::cout << "\n";
   std::printf("%-18s %10s %7s %7s %5s %8s %9s %9s %9s %9s %8s %9s %7s\n", "method", "time_ms", "failed", "flipped",
               "degen", "overlaps", "angle_avg", "angle_max", "area_avg", "area_max", "L2", "moved", "1-to-1");

@@ -129,6 +129,13 @@ inline Input_mesh read_input(const std::string& path, const Patch_cli_options& o
   return in;
 }
 
+/// What the summary lines say of `Patching_report::flat_faces_handed`: nothing for none.
+inline std::string flat_faces_handed_clause(std::size_t handed)
+{
+  if(handed == 0) return std::string();
+  return std::to_string(handed) + (handed == 1 ? " flat face" : " flat faces") + " handed to a neighbour";
+}
+
 /// Cuts the mesh into disc patches (see `diffuv::disc_patches()`).
 /// \throws diffuv::Input_error with `--strict` if a region is not a disc
 inline diffuv::Segmentation<Mesh> make_patches(const Input_mesh& in, const Patch_cli_options& o,

@@ -398,7 +398,7 @@ void run_param(const Param_options& options)
               << options.distance << " distances: "
               << (!in.label_source.empty() ? in.label_source : patch_source(r, options.patches.patches))
               << "; " << r.merged << " merged, " << r.cut << " cut into discs, " << r.caps_split << " caps split";
-    if(r.flat_faces_handed) std::cout << ", " << r.flat_faces_handed << (r.flat_faces_handed == 1 ? " flat face" : " flat faces") << " handed to a neighbour";
+    if(r.flat_faces_handed) std::cout << ", " << flat_faces_handed_clause(r.flat_faces_handed);
     std::cout << "\n";
   }
   std::printf("%-6s %6s %8s %8s %-10s %8s %6s %7s %5s %6s %8s %9s %9s %9s %9s %8s %9s %9s\n", "patch", "label",

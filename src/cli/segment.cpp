@@ -45,7 +45,7 @@ void run_segment(const Segment_options& options)
             << (!in.label_source.empty() ? in.label_source : report.automatic ? "automatic" : "the whole disc")
             << "), " << smallest << " to " << largest << " faces each; " << report.merged << " merged, " << report.cut
             << " cut into discs, " << report.caps_split << " caps split";
-  if(report.flat_faces_handed) std::cout << ", " << report.flat_faces_handed << (report.flat_faces_handed == 1 ? " flat face" : " flat faces") << " handed to a neighbour";
+  if(report.flat_faces_handed) std::cout << ", " << flat_faces_handed_clause(report.flat_faces_handed);
   if(!report.not_discs.empty()) std::cout << "; " << report.not_discs.size() << " not discs";
   std::cout << "\nwrote";
   for(const auto& p : out.paths()) std::cout << ' ' << p;

@@ -785,13 +785,15 @@ inline Text_mesh_scan scan_ply(const std::string& path, std::uintmax_t file_size
           return std::any_of(later.properties.begin(), later.properties.end(),
                              [](const Property& p) { return p.size_type >= 4; });
         });
+    auto cut_short_before_lists = [&](std::size_t j, const Property& p) {
+      return fail(0, "item " + std::to_string(j) + " of element \"" + e.name + "\" ends before its property \"" + p.name +
+                         "\" can be read, and a later element has lists");
+    };
     for(std::size_t j = 0; j < e.count; ++j)
       for(const Property& p : e.properties) {
         double value;
         const bool ok = read(p.size_type >= 0 ? p.size_type : p.type, value);
-        if(!ok && faces_then_lists)
-          return fail(0, "item " + std::to_string(j) + " of element \"" + e.name + "\" ends before its property \"" + p.name +
-                             "\" can be read, and a later element has lists");
+        if(!ok && faces_then_lists) return cut_short_before_lists(j, p);
         if(!ok && p.size_type < 0)
           return scan; // CGAL stops here too, and reports the file as not valid
         if(!ok) // CGAL would allocate a list of the unread (uninitialised) length first
@@ -805,12 +807,7 @@ inline Text_mesh_scan scan_ply(const std::string& path, std::uintmax_t file_size
                              "\" of " + std::to_string(static_cast<long long>(value)) + " values, " +
                              (value < 0 ? "a negative length" : "more than the file can hold"));
         for(std::size_t i = 0, n = static_cast<std::size_t>(value); i < n; ++i)
-          if(!read(p.type, value)) {
-            if(faces_then_lists)
-              return fail(0, "item " + std::to_string(j) + " of element \"" + e.name + "\" ends before its property \"" + p.name +
-                                 "\" can be read, and a later element has lists");
-            return scan;
-          }
+          if(!read(p.type, value)) return faces_then_lists ? cut_short_before_lists(j, p) : scan;
       }
   }
   return scan;
