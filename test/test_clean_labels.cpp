@@ -150,8 +150,12 @@ const std::vector<int>& automatic_labels(const std::string& name)
   auto it = cache.find(name);
   if(it == cache.end()) {
     const Mesh& m = cgal_mesh(name);
+    // Region-sized labels, as a user paints them: the Voronoi layout's patches
+    // (the four-sided layout's quads are many times smaller than a region).
     diffuv::Segmentation<Mesh> seg;
-    EXPECT_TRUE(diffuv::disc_patches(m, std::vector<int>(), m.points(), seg).ok()) << name;
+    diffuv::Patching_options options;
+    options.layout = diffuv::Patch_layout::voronoi;
+    EXPECT_TRUE(diffuv::disc_patches(m, std::vector<int>(), m.points(), seg, options).ok()) << name;
     it = cache.emplace(name, std::vector<int>(seg.face_patch.begin(), seg.face_patch.end())).first;
   }
   return it->second;
@@ -446,8 +450,8 @@ TEST(CleanLabels, ASaddleNeedsOneCut)
 
 TEST(CleanLabels, AutomaticPatchesOfCowAreLeftAlone)
 {
-  // disc_patches() ends with discs, one component each, borders smoothed:
-  // nothing for the rules to do.
+  // disc_patches() (the Voronoi layout) ends with discs, one component each,
+  // borders smoothed: nothing for the rules to do.
   const Mesh& cow = cgal_mesh("cow.off");
   std::vector<int> labels = automatic_labels("cow.off");
   const auto report = diffuv::clean_labels(cow, cow.points(), labels);

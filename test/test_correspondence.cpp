@@ -28,11 +28,13 @@ using Correspondence = diffuv::Atlas_correspondence<Mesh, Mesh>;
 using vertex_descriptor = Mesh::Vertex_index;
 using face_descriptor = Mesh::Face_index;
 
-// Labels of automatic disc patches (what `diffuv segment` writes).
+// Labels of automatic disc patches (what `diffuv segment --layout voronoi`
+// writes): region-sized, as a user paints them.
 std::vector<int> segment_labels(const Mesh& m, std::size_t patches = 12)
 {
   diffuv::Segmentation<Mesh> seg;
   diffuv::Patching_options options;
+  options.layout = diffuv::Patch_layout::voronoi;
   options.automatic.patches = patches;
   EXPECT_TRUE(diffuv::disc_patches(m, std::vector<int>(), m.points(), seg, options).ok());
   std::vector<int> labels(num_faces(m));

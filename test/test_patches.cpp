@@ -264,9 +264,11 @@ TEST(Patches, CapsAreSplitInTwo)
   EXPECT_TRUE(diffuv::is_cap(m, raw, 0, m.points()));
   EXPECT_TRUE(diffuv::is_cap(m, raw, 1, m.points()));
 
+  // The Voronoi layout's rule (the four-sided layout cuts every region into cells).
   Seg seg;
   diffuv::Patching_report report;
   diffuv::Patching_options split;
+  split.layout = diffuv::Patch_layout::voronoi;
   split.hand_off_flat_faces = false;  // to count the faces of each cap's halves
   ASSERT_TRUE(diffuv::disc_patches(m, labels, m.points(), seg, split, &report).ok());
   EXPECT_EQ(report.caps_split, 2u);
@@ -282,6 +284,7 @@ TEST(Patches, CapsAreSplitInTwo)
 
   // Without the split, the caps stay whole and get equal-arc corners.
   diffuv::Patching_options keep;
+  keep.layout = diffuv::Patch_layout::voronoi;
   keep.split_caps = false;
   Seg whole;
   ASSERT_TRUE(diffuv::disc_patches(m, labels, m.points(), whole, keep).ok());

@@ -63,12 +63,19 @@ TEST(SweepRegressions, TinyClosedMeshesAreCutIntoDiscs)
   for(const std::string name : {"tetrahedron.off", "reference_tetrahedron.off"}) {
     const Mesh& m = cgal_mesh(name);
     ASSERT_EQ(num_faces(m), 4u) << name;
+    // The Voronoi layout: two patches of two faces.
     Seg seg;
-    const diffuv::Status status = diffuv::disc_patches(m, std::vector<int>(), m.points(), seg);
+    diffuv::Patching_options voronoi;
+    voronoi.layout = diffuv::Patch_layout::voronoi;
+    const diffuv::Status status = diffuv::disc_patches(m, std::vector<int>(), m.points(), seg, voronoi);
     ASSERT_TRUE(status.ok()) << name << ": " << status.what();
     ASSERT_EQ(seg.number_of_patches(), 2u) << name;
     for(std::size_t p = 0; p < 2; ++p) EXPECT_EQ(seg.patch_faces[p].size(), 2u) << name;
     expect_all_patches_mapped(m, seg, name);
+    // The four-sided layout (default): discs too, each of them mapped.
+    Seg quads;
+    ASSERT_TRUE(diffuv::disc_patches(m, std::vector<int>(), m.points(), quads).ok()) << name;
+    expect_all_patches_mapped(m, quads, name + ", four-sided layout");
   }
   const Mesh m = bipyramid();
   Seg seg;
@@ -119,6 +126,7 @@ TEST(SweepRegressions, StrictDoesNotRefuseAutomaticPatches)
 {
   const Mesh& m = cgal_mesh("larger_sphere.off");
   diffuv::Patching_options options;
+  options.layout = diffuv::Patch_layout::voronoi;  // the layout with automatic.patches
   options.automatic.patches = 1;
   options.automatic.max_patches = 1;
   Seg loose, strict;

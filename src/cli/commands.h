@@ -30,6 +30,9 @@ void add_correspond_command(CLI::App& app);
 /// Registers `diffuv segment`.
 void add_segment_command(CLI::App& app);
 
+/// Registers `diffuv measure`.
+void add_measure_command(CLI::App& app);
+
 } // namespace diffuv_cli
 
 #endif

@@ -7,6 +7,7 @@
 #include <diffuv/graph/distance_tags.h>
 #include <diffuv/io/labels.h>
 #include <diffuv/io/read_mesh.h>
+#include <diffuv/parameterization/layout_judge.h>
 #include <diffuv/patches/disc_patches.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -37,10 +38,12 @@ struct Input_mesh {
 /// Options that shape the patches, shared by `param` and `segment`.
 struct Patch_cli_options {
   std::string labels;
-  std::size_t patches = 12;
+  std::string layout = "quads";  // quads | voronoi
+  std::size_t patches = 0;       // 0: the layout's own density (voronoi: 12 seeds)
   bool no_split_caps = false;
   bool keep_flat_faces = false;
   bool strict = false;
+  std::size_t threads = 0;       // threads that map the patches while the layout is refined
 };
 
 /// CGAL's data set extracted by the build, or $DIFFUV_DATA_DIR.
@@ -56,13 +59,20 @@ inline void add_patch_options(CLI::App* cmd, Patch_cli_options& o)
                   "Region label file: one integer per face of the mesh file (file order). Each connected region is a "
                   "patch; the borders between regions are the sides. Default: the colours or integer face property "
                   "painted in a PLY/OFF mesh, else automatic patches for a mesh that is not a disc");
-  cmd->add_option("--patches", o.patches,
-                  "Automatic patches: how many to start from (more are added until every patch is a disc)")
-      ->check(CLI::Range(1, 1000))
+  cmd->add_option("--layout", o.layout,
+                  "How patches are made where no labels say: quads (four-sided patches, conforming, refined until each "
+                  "patch's raw map is good; labelled regions are split into them too) or voronoi (Voronoi cells whose "
+                  "runs of neighbours are merged into four sides, diffuv 0.1's patches)")
+      ->check(CLI::IsMember({"quads", "voronoi"}))
       ->capture_default_str();
+  cmd->add_option("--patches", o.patches,
+                  "quads: about N patches to start from (refinement may add some; default: one cell per 900 faces, "
+                  "about five patches each); voronoi: N seeds to start from (default 12; more are added until every "
+                  "patch is a disc)")
+      ->check(CLI::Range(std::size_t(1), std::size_t(100000)));
   cmd->add_flag("--no-split-caps", o.no_split_caps,
-                "Keep caps (patches with one neighbour all around, like a hand or an ear) whole instead of splitting "
-                "them in two");
+                "voronoi layout: keep caps (patches with one neighbour all around, like a hand or an ear) whole "
+                "instead of splitting them in two");
   cmd->add_flag("--keep-flat-faces", o.keep_flat_faces,
                 "Keep every face in its region even when its three vertices end up on one side of the patch (flat in "
                 "any map onto the square) instead of handing it to a neighbouring patch");
@@ -142,15 +152,46 @@ inline diffuv::Segmentation<Mesh> make_patches(const Input_mesh& in, const Patch
                                                diffuv::Patching_report& report)
 {
   diffuv::Patching_options options;
+  options.layout = o.layout == "voronoi" ? diffuv::Patch_layout::voronoi : diffuv::Patch_layout::quads;
   options.split_caps = !o.no_split_caps;
   options.hand_off_flat_faces = !o.keep_flat_faces;
   options.strict = o.strict;
-  options.automatic.patches = o.patches;
+  options.automatic.patches = o.patches > 0 ? o.patches : 12;
+  options.quads.target_patches = o.patches;
+  diffuv::Raw_map_judge_options judging;
+  judging.threads = o.threads;
+  const diffuv::Raw_map_judge<Mesh, decltype(in.mesh.points())> judge(in.mesh, in.mesh.points(), judging);
   diffuv::Segmentation<Mesh> seg;
-  const diffuv::Status status = diffuv::disc_patches(in.mesh, in.face_labels, in.mesh.points(), seg, options, &report);
+  const diffuv::Status status = diffuv::disc_patches(in.mesh, in.face_labels, in.mesh.points(), seg, options, &report, judge);
   if(!status && o.strict)
     throw diffuv::Input_error(in.labels_path.empty() ? in.path : in.labels_path, 0, status.what());
   return seg;
+}
+
+/// What the summary says of the patches made: the layout's counts, or the
+/// Voronoi steps ("0 merged, 1 cut into discs, 2 caps split").
+inline std::string patching_clause(const diffuv::Patching_report& r, const Patch_cli_options& o)
+{
+  std::string s;
+  if(o.layout == "voronoi" || r.voronoi_instead) {
+    s = std::to_string(r.merged) + " merged, " + std::to_string(r.cut) + " cut into discs, " +
+        std::to_string(r.caps_split) + " caps split";
+    if(r.voronoi_instead) s = "the four-sided layout left a patch that is not a disc: Voronoi patches instead; " + s;
+  } else {
+    const auto& l = r.layout;
+    s = "four-sided layout: " + std::to_string(l.quads) + (l.quads == 1 ? " quad" : " quads");
+    if(l.kept_regions > 0) {
+      s += " (the regions, kept whole)";
+    } else {
+      s += " from " + std::to_string(l.cells) + " cells";
+      if(l.refined_cells > 0) s += ", " + std::to_string(l.refined_cells) + " refined";
+    }
+    if(l.fallback_patches > 0) s += ", " + std::to_string(l.fallback_patches) + " other patches";
+    if(r.merged > 0) s += ", " + std::to_string(r.merged) + " merged (fewer than four border vertices)";
+    if(r.cut > 0) s += ", " + std::to_string(r.cut) + (r.cut == 1 ? " region" : " regions") + " not a disc (cut into cells)";
+  }
+  if(r.flat_faces_handed) s += ", " + flat_faces_handed_clause(r.flat_faces_handed);
+  return s;
 }
 
 /// Writes the patch of each face of the mesh file, one per line (a label file

@@ -49,6 +49,7 @@ struct Param_options {
   std::string size = "800x600";
   int isolines = 10;
   bool svg = false;
+  bool unit_squares = false; // write each chart on the unit square, not on its own rectangle
   std::string color = "patches";
   bool render_only = false; // diffuv render: the picture only
   std::size_t threads = 0;   // 0: every core (with oneTBB)
@@ -160,9 +161,10 @@ Parameterization parameterize_by_patches(const Input_mesh& in, const Patch_cli_o
 }
 
 // Where the patches came from when no labels were given.
-std::string patch_source(const diffuv::Patching_report& r, int seeds)
+std::string patch_source(const diffuv::Patching_report& r, const Patch_cli_options& o)
 {
-  const std::string automatic = "automatic (" + std::to_string(seeds) + " seeds to start)";
+  const std::string automatic =
+      o.layout == "voronoi" ? "automatic (" + std::to_string(o.patches > 0 ? o.patches : 12) + " seeds to start)" : "automatic";
   if(r.components <= 1) return r.automatic ? automatic : "the whole disc";
   std::string s = std::to_string(r.components) + " components, " + std::to_string(r.whole_components) +
                   (r.whole_components == 1 ? " a whole disc" : " whole discs");
@@ -173,6 +175,7 @@ std::string patch_source(const diffuv::Patching_report& r, int seeds)
 std::string corner_rule(const diffuv::Side_report& r, bool given)
 {
   if(given) return "given";
+  if(r.chosen) return "layout";
   if(r.equal_arcs) return "arcs";
   std::string s = std::to_string(r.runs) + " runs";
   if(r.merged) s += " -" + std::to_string(r.merged);
@@ -199,7 +202,7 @@ struct Chart_measure {
 };
 
 // #P entries; a patch without a chart gets an empty measure.
-std::vector<Chart_measure> measure_charts(const Input_mesh& in, const Parameterization& result)
+std::vector<Chart_measure> measure_charts(const Input_mesh& in, const Parameterization& result, bool unit_squares)
 {
   std::vector<Chart_measure> measures(result.patches.size());
   for(std::size_t p = 0; p < result.patches.size(); ++p) {
@@ -207,8 +210,13 @@ std::vector<Chart_measure> measure_charts(const Input_mesh& in, const Parameteri
     if(!r.status) continue;
     const auto& chart = result.atlas->chart(r.chart);
     Chart_measure& m = measures[p];
-    m.summary = diffuv::measure_distortion(in.mesh, chart.faces, in.mesh.points(),
-                                           result.atlas->chart_uv_map(r.chart), &m.per_face);
+    // As the OBJ carries it: on the chart's rectangle, or on the unit square.
+    if(unit_squares)
+      m.summary = diffuv::measure_distortion(in.mesh, chart.faces, in.mesh.points(),
+                                             result.atlas->chart_uv_map(r.chart), &m.per_face);
+    else
+      m.summary = diffuv::measure_distortion(in.mesh, chart.faces, in.mesh.points(),
+                                             result.atlas->chart_texture_map(r.chart), &m.per_face);
   }
   return measures;
 }
@@ -330,9 +338,11 @@ void run_param(const Param_options& options)
   // More threads than cores gain nothing, and oneTBB would warn about them.
   const std::size_t cores = (std::max)(1u, std::thread::hardware_concurrency());
   const std::size_t threads = options.threads == 0 ? 0 : (std::min)(options.threads, cores);
+  Patch_cli_options patching = options.patches;
+  patching.threads = threads;
   for(int run = 0; run < options.runs; ++run) {
     result = options.corners.empty()
-                 ? parameterize_by_patches(in, options.patches, options.distance, repair, threads)
+                 ? parameterize_by_patches(in, patching, options.distance, repair, threads)
                  : parameterize_with_corners(in, corners, options.corners, options.distance, repair);
     times.push_back(result.milliseconds);
   }
@@ -358,14 +368,18 @@ void run_param(const Param_options& options)
   // Everything is computed before anything is written: all files or none.
   const std::vector<std::string> inputs = {in.path, options.corners, options.patches.labels};
   stages.restart();
-  const std::vector<Chart_measure> measures = measure_charts(in, result); // for the picture and the table
+  const std::vector<Chart_measure> measures = measure_charts(in, result, options.unit_squares); // for the picture and the table
   stages.done("measure");
   diffuv::Output_folder out(options.output, inputs);
   if(!options.render_only) {
     // A textured OBJ: any viewer shows the map as a checkerboard on the mesh.
     const std::string texture = output_name(in.path, ".checker.png");
-    diffuv::write_obj(out.open(output_name(in.path, ".obj")), in.mesh, in.mesh.points(), atlas.corner_uv_map(),
-                      output_name(in.path, ".mtl"), "diffuv_checker");
+    if(options.unit_squares)
+      diffuv::write_obj(out.open(output_name(in.path, ".obj")), in.mesh, in.mesh.points(), atlas.corner_uv_map(),
+                        output_name(in.path, ".mtl"), "diffuv_checker");
+    else
+      diffuv::write_obj(out.open(output_name(in.path, ".obj")), in.mesh, in.mesh.points(), atlas.corner_texture_map(),
+                        output_name(in.path, ".mtl"), "diffuv_checker");
     diffuv::write_mtl(out.open(output_name(in.path, ".mtl")), "diffuv_checker", texture);
     diffuv::write_png(out.open(texture), 512, 512, diffuv::checker_texture(512, 8));
     if(options.svg)
@@ -396,10 +410,8 @@ void run_param(const Param_options& options)
     const auto& r = result.patching;
     std::cout << result.seg.number_of_patches() << (result.seg.number_of_patches() == 1 ? " patch, " : " patches, ")
               << options.distance << " distances: "
-              << (!in.label_source.empty() ? in.label_source : patch_source(r, options.patches.patches))
-              << "; " << r.merged << " merged, " << r.cut << " cut into discs, " << r.caps_split << " caps split";
-    if(r.flat_faces_handed) std::cout << ", " << flat_faces_handed_clause(r.flat_faces_handed);
-    std::cout << "\n";
+              << (!in.label_source.empty() ? in.label_source : patch_source(r, options.patches))
+              << "; " << patching_clause(r, options.patches) << "\n";
   }
   std::printf("%-6s %6s %8s %8s %-10s %8s %6s %7s %5s %6s %8s %9s %9s %9s %9s %8s %9s %9s\n", "patch", "label",
               "vertices", "faces", "corners", "time_ms", "moved", "flipped", "degen", "forced", "overlaps", "angle_avg", "angle_max", "area_avg",
@@ -522,6 +534,9 @@ void add_param_command(CLI::App& app)
   add_common_options(cmd, *options);
   cmd->add_flag("--svg", options->svg, "Also write each patch's uv layout as OUTPUT/<mesh>.patch<N>.svg (flipped "
                                       "triangles in red, the four sides in colour)");
+  cmd->add_flag("--unit-squares", options->unit_squares,
+                "Write every chart on the unit square (the canonical (u,v)) instead of on a rectangle of its own "
+                "aspect (the mean lengths of its two pairs of opposite sides); the table then measures the squares");
   cmd->add_option("--runs", options->runs, "Run the parameterization N times and report the median time")
       ->check(CLI::Range(1, 1000))
       ->capture_default_str();

@@ -5,6 +5,9 @@
 
 #include <diffuv/io/atomic_file.h>
 #include <diffuv/io/labels.h>
+#include <diffuv/patches/region_sides.h>
+
+#include <array>
 
 #include <iostream>
 #include <memory>
@@ -29,9 +32,25 @@ void run_segment(const Segment_options& options)
   std::vector<int> face_patch(num_faces(in.mesh));
   for(auto f : faces(in.mesh)) face_patch[f.idx()] = static_cast<int>(seg.face_patch[f.idx()]);
 
+  // Each patch's four corners, (0,0) first: the layout's, or those region_sides() picks.
+  std::vector<std::array<std::size_t, 4>> corners(seg.number_of_patches());
+  std::vector<char> has_corners(seg.number_of_patches(), 0);
+  for(std::size_t p = 0; p < seg.number_of_patches(); ++p) {
+    diffuv::Four_sides<Mesh::Vertex_index> sides;
+    if(!diffuv::check_patch_disc(in.mesh, seg, p) || !diffuv::region_sides(in.mesh, seg, p, in.mesh.points(), sides)) continue;
+    for(std::size_t k = 0; k < 4; ++k) corners[p][k] = sides.corners[k].idx();  // vertex i of the mesh is point i of the file
+    has_corners[p] = 1;
+  }
+
   diffuv::Output_folder out(options.output, {in.path, options.patches.labels});
   write_polygon_patches(out.open(output_name(in.path, ".patches.txt")), in, seg);
   diffuv::write_labelled_ply(out.open(output_name(in.path, ".patches.ply")), in.mesh, in.mesh.points(), face_patch);
+  std::ostream& corner_file = out.open(output_name(in.path, ".corners.txt"));
+  corner_file << "# patch and its four corners (vertex numbers of the mesh file): (0,0) (1,0) (1,1) (0,1), "
+                 "counter-clockwise\n";
+  for(std::size_t p = 0; p < seg.number_of_patches(); ++p)
+    if(has_corners[p])
+      corner_file << p << ' ' << corners[p][0] << ' ' << corners[p][1] << ' ' << corners[p][2] << ' ' << corners[p][3] << '\n';
   out.commit();
 
   std::size_t smallest = num_faces(in.mesh), largest = 0;
@@ -43,9 +62,7 @@ void run_segment(const Segment_options& options)
             << " faces\n"
             << seg.number_of_patches() << " patches ("
             << (!in.label_source.empty() ? in.label_source : report.automatic ? "automatic" : "the whole disc")
-            << "), " << smallest << " to " << largest << " faces each; " << report.merged << " merged, " << report.cut
-            << " cut into discs, " << report.caps_split << " caps split";
-  if(report.flat_faces_handed) std::cout << ", " << flat_faces_handed_clause(report.flat_faces_handed);
+            << "), " << smallest << " to " << largest << " faces each; " << patching_clause(report, options.patches);
   if(!report.not_discs.empty()) std::cout << "; " << report.not_discs.size() << " not discs";
   std::cout << "\nwrote";
   for(const auto& p : out.paths()) std::cout << ' ' << p;
@@ -63,9 +80,9 @@ void add_segment_command(CLI::App& app)
   cmd->add_option("-o,--output", options->output, "Output folder (created if needed)")
       ->check(output_folder_check())
       ->capture_default_str();
-  cmd->footer("Writes OUTPUT/<mesh>.patches.txt (the patch of each face of the mesh file, one per line: a label file for --labels) "
-              "and OUTPUT/<mesh>.patches.ply (a colour per patch, for MeshLab or Blender; repaint it and pass it "
-              "back to diffuv param).\nExit codes: 0 ok, 1 bad input, 2 bad command line, 3 cannot write, 4 internal error.");
+  cmd->footer("Writes OUTPUT/<mesh>.patches.txt (the patch of each face of the mesh file, one per line: a label file for --labels), "
+              "OUTPUT/<mesh>.patches.ply (a colour per patch, for MeshLab or Blender; repaint it and pass it "
+              "back to diffuv param) and OUTPUT/<mesh>.corners.txt (each patch's four corners).\nExit codes: 0 ok, 1 bad input, 2 bad command line, 3 cannot write, 4 internal error.");
   cmd->callback([options]() { run_segment(*options); });
 }
 

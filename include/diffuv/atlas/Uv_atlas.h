@@ -94,6 +94,9 @@ public:
     std::vector<Local_index> star_faces;                ///< faces (positions in `faces`) around each local vertex
     double longest_uv_edge = 0.;
     std::unique_ptr<Tree> tree;
+    /// The chart's rectangle in a texture: (u,v) in [0,1]^2 is drawn at
+    /// (u * size[0], v * size[1]); (1,1) draws every chart on the unit square.
+    std::array<double, 2> size{{1., 1.}};
   };
 
   explicit Uv_atlas(const TriangleMesh& tm)
@@ -237,6 +240,34 @@ public:
       const std::size_t c = chart_of(face(h, mesh_));
       if(c == no_chart) return Point_2(nan, nan);
       return uv_in_chart(target(h, mesh_), c);
+    });
+  }
+
+  /// Sets the rectangle chart `c` is drawn in (`Chart::size`), e.g. the
+  /// patch's own aspect, so that a texture is not stretched across it.
+  /// \pre `width` and `height` are positive and finite
+  void set_chart_size(std::size_t c, double width, double height) { charts_.at(c)->size = {width, height}; }
+
+  /// A halfedge property map like `corner_uv_map()`, in each chart's rectangle
+  /// (`Chart::size`): the texture coordinates an OBJ or glTF file carries.
+  auto corner_texture_map() const
+  {
+    return boost::make_function_property_map<halfedge_descriptor>([this](halfedge_descriptor h) {
+      const double nan = std::numeric_limits<double>::quiet_NaN();
+      if(is_border(h, mesh_)) return Point_2(nan, nan);
+      const std::size_t c = chart_of(face(h, mesh_));
+      if(c == no_chart) return Point_2(nan, nan);
+      const Point_2 q = uv_in_chart(target(h, mesh_), c);
+      return Point_2(q.x() * charts_[c]->size[0], q.y() * charts_[c]->size[1]);
+    });
+  }
+
+  /// A vertex property map like `chart_uv_map(c)`, in the chart's rectangle (`Chart::size`).
+  auto chart_texture_map(std::size_t c) const
+  {
+    return boost::make_function_property_map<vertex_descriptor>([this, c](vertex_descriptor v) {
+      const Point_2 q = uv_in_chart(v, c);
+      return Point_2(q.x() * charts_[c]->size[0], q.y() * charts_[c]->size[1]);
     });
   }
 

@@ -30,11 +30,15 @@ struct Labelled_atlas_options {
 
   bool clean = true;                  ///< clean the labels first (`clean_labels()`)
   Label_cleaning_options cleaning;
-  /// Cut of non-disc regions, split of caps. No flat face is handed to a
+  /// Cut of non-disc regions, split of caps. The regions themselves are the
+  /// patches (`Patch_layout::voronoi`): the four-sided layout would cut each
+  /// region into cells from seeds placed on each mesh's own tessellation, and
+  /// two meshes' cells would not correspond. No flat face is handed to a
   /// neighbouring patch here (`hand_off_flat_faces`), for the reason below:
   /// the two meshes' patches would differ where their tessellations differ.
   Patching_options patching = [] {
     Patching_options o;
+    o.layout = Patch_layout::voronoi;
     o.hand_off_flat_faces = false;
     return o;
   }();

@@ -93,7 +93,9 @@ Status parameterize_disc(const TriangleMesh& tm,
     chart_uv.push_back(uv_of[get(index, v)]);
   }
   std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> chart_faces(faces(tm).begin(), faces(tm).end());
-  atlas.add_chart(std::move(chart_faces), std::move(chart_vertices), std::move(chart_uv));
+  const std::size_t chart = atlas.add_chart(std::move(chart_faces), std::move(chart_vertices), std::move(chart_uv));
+  const auto size = chart_size(four, get(CGAL::vertex_point, tm));
+  atlas.set_chart_size(chart, size[0], size[1]);
   if(sides) *sides = std::move(four);
   return Status();
 }

@@ -177,6 +177,8 @@ std::vector<Patch_result<TriangleMesh>> parameterize_patches(const TriangleMesh&
     if(!results[p].status) continue;
     const auto start = std::chrono::steady_clock::now();
     results[p].chart = atlas.add_chart(seg.patch_faces[p], std::move(charts[p].vertices), std::move(charts[p].uv));
+    const auto size = chart_size(results[p].sides, vpm);
+    atlas.set_chart_size(results[p].chart, size[0], size[1]);
     results[p].milliseconds +=
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   }

@@ -5,29 +5,40 @@
 #include <diffuv/error.h>
 #include <diffuv/patches/disc_topology.h>
 #include <diffuv/patches/flat_faces.h>
+#include <diffuv/patches/quad_layout.h>
 #include <diffuv/patches/segmentation.h>
 #include <diffuv/patches/split_patches.h>
 
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 
+#include <limits>
 #include <string>
 #include <vector>
 
 namespace diffuv {
 
+/// How `disc_patches()` makes patches where the labels (or their absence) leave it free.
+enum class Patch_layout {
+  quads,   ///< the four-sided layout (patches/quad_layout.h): conforming quads from Voronoi cells (default)
+  voronoi  ///< Voronoi cells refined until discs, their runs of neighbours merged into four sides (diffuv 0.1)
+};
+
 /// Options of `disc_patches()`.
 struct Patching_options {
-  bool split_caps = true;        ///< split caps (one neighbour all around) in two, as the paper recommends
+  Patch_layout layout = Patch_layout::quads;  ///< automatic patches, and how labelled regions are split
+  bool split_caps = true;        ///< (voronoi layout) split caps (one neighbour all around) in two, as the paper recommends
   bool strict = false;           ///< report a labelled region that is not a disc instead of cutting it
   /// hand a face left flat by its patch's four sides to a neighbouring patch
   /// (`hand_flat_faces_to_neighbours()`)
   bool hand_off_flat_faces = true;
-  Voronoi_options automatic;     ///< automatic patches: how many to start from
+  Voronoi_options automatic;     ///< (voronoi layout) automatic patches: how many seeds to start from
+  Quad_layout_options quads;     ///< (quads layout) cells, collapses, refinement
 };
 
 /// What `disc_patches()` did.
 struct Patching_report {
   bool automatic = false;          ///< no labels were given: patches were made automatically
+  Quad_layout_report layout;       ///< what the four-sided layout did (quads layout)
   std::size_t components = 1;      ///< connected components of the mesh (counted when no labels were given)
   std::size_t whole_components = 0;  ///< components that were discs, kept as one patch each
   std::size_t merged = 0;          ///< patches with fewer than four boundary vertices merged into a neighbour
@@ -35,7 +46,115 @@ struct Patching_report {
   std::size_t caps_split = 0;      ///< caps split in two
   std::size_t flat_faces_handed = 0;  ///< faces flat on one side of their patch, handed to a neighbouring patch
   std::vector<std::size_t> not_discs;  ///< patches left that are not discs (none unless `strict` or a cut failed)
+  /// The four-sided layout left a patch that is not a disc (e.g. a closed mesh
+  /// of a few faces, whose one-face patches merge into a closed one), so the
+  /// Voronoi layout made the patches instead.
+  bool voronoi_instead = false;
 };
+
+namespace internal {
+
+// A patch with fewer than four boundary vertices (a lone face of a tiny closed
+// mesh) cannot be mapped onto a square: it joins a neighbour
+// (`merge_small_patches()`). The patches left whole keep their label, part
+// and corners; one that grew keeps its label and part, and loses its corners.
+template <class TriangleMesh, class VertexPointMap>
+std::size_t merge_unmappable_patches(const TriangleMesh& tm, Segmentation<TriangleMesh>& seg, VertexPointMap vpm)
+{
+  bool any = false;
+  for(std::size_t p = 0; p < seg.number_of_patches() && !any; ++p) {
+    std::size_t boundary_vertices = 0;
+    for(const auto& loop : patch_loops(tm, seg, p, vpm)) boundary_vertices += loop.vertices.size();
+    any = boundary_vertices < 4;
+  }
+  if(!any) return 0;
+  auto findex = get(boost::face_index, tm);
+  std::vector<int> labels(num_faces(tm), std::numeric_limits<int>::min());
+  for(std::size_t p = 0; p < seg.number_of_patches(); ++p)
+    for(auto f : seg.patch_faces[p]) labels[get(findex, f)] = static_cast<int>(p);
+  Segmentation<TriangleMesh> merged = patches_from_labels(tm, labels, vpm);
+  const std::size_t count = merge_small_patches(tm, labels, merged, vpm);
+  merged.patch_corners.assign(merged.number_of_patches(), Segmentation<TriangleMesh>::no_corners());
+  for(std::size_t q = 0; q < merged.number_of_patches(); ++q) {
+    const std::size_t old = static_cast<std::size_t>(merged.patch_label[q]);
+    merged.patch_label[q] = seg.patch_label[old];
+    merged.patch_part[q] = seg.patch_part[old];
+    if(merged.patch_faces[q].size() == seg.patch_faces[old].size() && seg.corners(old)) merged.patch_corners[q] = *seg.corners(old);
+  }
+  seg = std::move(merged);
+  return count;
+}
+
+// disc_patches() with the four-sided layout.
+template <class TriangleMesh, class VertexPointMap, class Judge>
+Status four_sided_patches(const TriangleMesh& tm, std::vector<int> face_labels, VertexPointMap vpm,
+                          Segmentation<TriangleMesh>& seg, const Patching_options& options, Patching_report& r, Judge judge)
+{
+  auto findex = get(boost::face_index, tm);
+  const bool labelled = !face_labels.empty();
+  std::vector<std::size_t> component(num_faces(tm));
+  r.components = CGAL::Polygon_mesh_processing::connected_components(
+      tm, boost::make_iterator_property_map(component.begin(), findex));
+  if(labelled) {
+    // Regions with fewer than four boundary vertices join a neighbour, as with
+    // the Voronoi layout; with `strict`, a region that is not a disc is reported.
+    seg = patches_from_labels(tm, face_labels, vpm);
+    r.merged = merge_small_patches(tm, face_labels, seg, vpm);
+    for(std::size_t p = 0; p < seg.number_of_patches(); ++p)
+      if(!check_patch_disc(tm, seg, p)) {
+        if(options.strict) r.not_discs.push_back(p);
+        else ++r.cut;  // its cells are discs
+      }
+    if(!r.not_discs.empty()) return check_patch_disc(tm, seg, r.not_discs.front());
+  } else {
+    // A component that is a disc stays one patch (its corners by equal arcs);
+    // any other one is laid out.
+    const std::vector<int> component_labels(component.begin(), component.end());
+    const Segmentation<TriangleMesh> by_component = patches_from_labels(tm, component_labels, vpm);
+    face_labels.assign(num_faces(tm), std::numeric_limits<int>::min());
+    bool any = false;
+    for(std::size_t c = 0; c < by_component.number_of_patches(); ++c) {
+      if(check_patch_disc(tm, by_component, c)) { ++r.whole_components; continue; }
+      any = true;
+      for(auto f : by_component.patch_faces[c]) face_labels[get(findex, f)] = static_cast<int>(c);
+    }
+    r.automatic = any;
+    Segmentation<TriangleMesh> laid;
+    if(any) {
+      // quad_layout() of the non-disc components only; the discs come after, whole.
+      quad_layout(tm, face_labels, vpm, laid, options.quads, &r.layout, judge, Region_labels::areas);
+    }
+    seg = Segmentation<TriangleMesh>();
+    seg.face_patch.assign(num_faces(tm), Segmentation<TriangleMesh>::no_patch);
+    auto add = [&](const std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>& faces,
+                   const std::array<typename Segmentation<TriangleMesh>::vertex_descriptor, 4>& corners) {
+      for(auto f : faces) seg.face_patch[get(findex, f)] = seg.patch_faces.size();
+      seg.patch_label.push_back(static_cast<int>(seg.patch_faces.size()));
+      seg.patch_part.push_back(0);
+      seg.patch_faces.push_back(faces);
+      seg.patch_corners.push_back(corners);
+    };
+    for(std::size_t p = 0; p < laid.number_of_patches(); ++p)
+      add(laid.patch_faces[p], laid.patch_corners.empty() ? Segmentation<TriangleMesh>::no_corners() : laid.patch_corners[p]);
+    for(std::size_t c = 0; c < by_component.number_of_patches(); ++c)
+      if(check_patch_disc(tm, by_component, c)) add(by_component.patch_faces[c], Segmentation<TriangleMesh>::no_corners());
+  }
+  if(labelled) {
+    Segmentation<TriangleMesh> laid;
+    quad_layout(tm, face_labels, vpm, laid, options.quads, &r.layout, judge);
+    seg = std::move(laid);
+  }
+  // Labelled regions keep their borders: faces move only between their sub-patches.
+  if(options.hand_off_flat_faces) r.flat_faces_handed = hand_flat_faces_to_neighbours(tm, seg, vpm, labelled);
+  r.merged += merge_unmappable_patches(tm, seg, vpm);
+  r.not_discs.clear();
+  for(std::size_t p = 0; p < seg.number_of_patches(); ++p)
+    if(!check_patch_disc(tm, seg, p)) r.not_discs.push_back(p);
+  if(!r.not_discs.empty()) return check_patch_disc(tm, seg, r.not_discs.front());
+  return Status();
+}
+
+} // namespace internal
 
 /// Cuts `tm` into disc patches.
 ///
@@ -50,10 +169,10 @@ struct Patching_report {
 ///
 /// \returns `not_a_disc` (detail: the first bad patch) if a patch that is not a
 ///          disc is left, `ok` otherwise; `seg` is filled in both cases
-template <class TriangleMesh, class VertexPointMap>
+template <class TriangleMesh, class VertexPointMap, class Judge = No_refinement>
 Status disc_patches(const TriangleMesh& tm, std::vector<int> face_labels, VertexPointMap vpm,
                     Segmentation<TriangleMesh>& seg, const Patching_options& options = Patching_options(),
-                    Patching_report* report = nullptr)
+                    Patching_report* report = nullptr, Judge judge = Judge())
 {
   Patching_report local;
   Patching_report& r = report ? *report : local;
@@ -62,6 +181,15 @@ Status disc_patches(const TriangleMesh& tm, std::vector<int> face_labels, Vertex
   // `strict` is about the given regions: automatic patches are ours to cut
   // further (voronoi_discs() may stop at max_patches with a non-disc left).
   const bool labelled = !face_labels.empty();
+  if(options.layout == Patch_layout::quads) {
+    const Status status = internal::four_sided_patches(tm, face_labels, vpm, seg, options, r, judge);
+    if(status || (options.strict && labelled)) return status;
+    Patching_options voronoi = options;
+    voronoi.layout = Patch_layout::voronoi;
+    const Status again = disc_patches(tm, std::move(face_labels), vpm, seg, voronoi, &r);
+    r.voronoi_instead = true;
+    return again;
+  }
 
   if(face_labels.empty()) {
     face_labels.assign(num_faces(tm), 0);

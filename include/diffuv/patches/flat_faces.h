@@ -65,10 +65,12 @@ flat_faces(const TriangleMesh& tm, const Segmentation<TriangleMesh>& seg, std::s
 /// the segmentation and the geometry. Labels and the number and
 /// order of patches are unchanged; a handed face takes its new patch's label.
 ///
+/// \param keep_labels hand faces only to patches of the same label (the
+///        sub-patches of one labelled region), so regions keep their borders
 /// \returns how many faces changed patch
 template <class TriangleMesh, class VertexPointMap>
 std::size_t hand_flat_faces_to_neighbours(const TriangleMesh& tm, Segmentation<TriangleMesh>& seg, VertexPointMap vpm,
-                                          std::size_t max_rounds = 4)
+                                          bool keep_labels = false, std::size_t max_rounds = 4)
 {
   using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
@@ -171,6 +173,7 @@ std::size_t hand_flat_faces_to_neighbours(const TriangleMesh& tm, Segmentation<T
           return true;
         };
         for(std::size_t q : touched) {
+          if(keep_labels && seg.patch_label[q] != seg.patch_label[p]) continue;
           const std::size_t position = move(f, p, q);
           if(total_flat() < before && corners_stay()) {
             ++this_round;

@@ -116,6 +116,27 @@ Status sides_from_corners(const std::vector<VertexDescriptor>& loop, const std::
   return Status();
 }
 
+/// The natural size of a patch's chart: the mean 3D length of its sides v1
+/// and v2 (along u) and of u1 and u2 (along v), scaled so that the larger is 1.
+/// A texture drawn on the rectangle (width, height) is then not stretched
+/// across the patch, where the unit square would stretch a long patch.
+///
+/// \returns {1, 1} if a pair of sides has no length
+template <class VertexDescriptor, class VertexPointMap>
+std::array<double, 2> chart_size(const Four_sides<VertexDescriptor>& sides, VertexPointMap vpm)
+{
+  auto length = [&](const std::vector<VertexDescriptor>& side) {
+    double sum = 0;
+    for(std::size_t i = 0; i + 1 < side.size(); ++i)
+      sum += std::sqrt(CGAL::to_double(CGAL::squared_distance(get(vpm, side[i]), get(vpm, side[i + 1]))));
+    return sum;
+  };
+  const double width = (length(sides.v1) + length(sides.v2)) / 2, height = (length(sides.u1) + length(sides.u2)) / 2;
+  if(!(width > 0 && height > 0 && std::isfinite(width) && std::isfinite(height))) return {1., 1.};
+  const double larger = std::max(width, height);
+  return {width / larger, height / larger};
+}
+
 /// Chooses four corners on a boundary loop automatically: the first is the
 /// boundary vertex with the smallest interior angle (the sharpest corner of
 /// the patch; the lowest vertex index on a tie), the three others cut the loop

@@ -51,6 +51,7 @@ struct Side_report {
   std::size_t moved = 0;    ///< corners moved onto an ear so that no triangle is flat (separate_flat_triangles())
   Corner_names names;       ///< the corners by their regions (before any move onto an ear)
   bool named = false;       ///< the corners followed the names given to `region_sides()`
+  bool chosen = false;      ///< the corners came with the patch (`Segmentation::patch_corners`, the four-sided layout)
 };
 
 /// Computes the four sides of disc patch `p` from the runs of its neighbours.
@@ -101,6 +102,13 @@ Status region_sides(const TriangleMesh& tm, const Segmentation<TriangleMesh>& se
   Side_report local_report;
   Side_report& r = report ? *report : local_report;
   r = Side_report();
+  for(std::size_t i = 0; i < n; ++i)
+    if(loop.neighbour[(i + n - 1) % n] != loop.neighbour[i]) ++r.runs;
+  if(const auto* chosen = seg.corners(p)) {
+    // The layout chose them; (0,0) first, the others in counter-clockwise order.
+    r.chosen = true;
+    return sides_from_corners(loop.vertices, std::vector<vertex_descriptor>(chosen->begin(), chosen->end()), sides);
+  }
 
   std::vector<double> at(n + 1, 0.); // arc length at each loop position
   for(std::size_t i = 0; i < n; ++i) at[i + 1] = at[i] + loop.length[i];
@@ -109,7 +117,6 @@ Status region_sides(const TriangleMesh& tm, const Segmentation<TriangleMesh>& se
   std::vector<std::size_t> corners; // loop positions, increasing
   for(std::size_t i = 0; i < n; ++i)
     if(loop.neighbour[(i + n - 1) % n] != loop.neighbour[i]) corners.push_back(i);
-  r.runs = corners.size();
 
   std::size_t sharpest = n; // loop position of equal_arc_corners()'s first corner
   if(corners.empty()) {

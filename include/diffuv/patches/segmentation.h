@@ -21,6 +21,7 @@
 #include <boost/graph/graph_traits.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <limits>
 #include <map>
@@ -38,14 +39,34 @@ using Point_of = typename boost::property_traits<VertexPointMap>::value_type;
 template <class TriangleMesh>
 struct Segmentation {
   using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
+  using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
   static constexpr std::size_t no_patch = std::numeric_limits<std::size_t>::max();
 
   std::vector<std::size_t> face_patch;                    ///< #F entries (by face index): the face's patch
   std::vector<int> patch_label;                           ///< #P entries: the region label of each patch
   std::vector<int> patch_part;                            ///< #P entries: 0, or 1, 2, ... for the pieces of a region cut in parts
   std::vector<std::vector<face_descriptor>> patch_faces;  ///< #P entries: the faces of each patch
+  /// Empty, or #P entries: the four corners of each patch, counter-clockwise
+  /// with (0,0) first, when they were chosen together with the patch (the
+  /// four-sided layout, patches/quad_layout.h). An entry of null vertices
+  /// (`boost::graph_traits<TriangleMesh>::null_vertex()`) leaves the corners
+  /// to `region_sides()`.
+  std::vector<std::array<vertex_descriptor, 4>> patch_corners;
 
   std::size_t number_of_patches() const { return patch_faces.size(); }
+
+  /// The corners chosen with patch `p`, or null if `region_sides()` chooses them.
+  const std::array<vertex_descriptor, 4>* corners(std::size_t p) const
+  {
+    if(p >= patch_corners.size() || patch_corners[p][0] == boost::graph_traits<TriangleMesh>::null_vertex()) return nullptr;
+    return &patch_corners[p];
+  }
+  /// No chosen corners: `region_sides()` picks them for every patch.
+  static std::array<vertex_descriptor, 4> no_corners()
+  {
+    const vertex_descriptor none = boost::graph_traits<TriangleMesh>::null_vertex();
+    return {none, none, none, none};
+  }
 
   /// Replaces patch `p` by `pieces` (same label, parts 1, 2, ... in the given
   /// order), inserted where `p` was so that the order of the others is kept.
@@ -57,10 +78,12 @@ struct Segmentation {
     patch_label.erase(patch_label.begin() + static_cast<std::ptrdiff_t>(p));
     patch_part.erase(patch_part.begin() + static_cast<std::ptrdiff_t>(p));
     patch_faces.erase(patch_faces.begin() + static_cast<std::ptrdiff_t>(p));
+    if(!patch_corners.empty()) patch_corners.erase(patch_corners.begin() + static_cast<std::ptrdiff_t>(p));
     for(std::size_t k = 0; k < pieces.size(); ++k) {
       patch_label.insert(patch_label.begin() + static_cast<std::ptrdiff_t>(p + k), label);
       patch_part.insert(patch_part.begin() + static_cast<std::ptrdiff_t>(p + k), base + static_cast<int>(k) + 1);
       patch_faces.insert(patch_faces.begin() + static_cast<std::ptrdiff_t>(p + k), std::move(pieces[k]));
+      if(!patch_corners.empty()) patch_corners.insert(patch_corners.begin() + static_cast<std::ptrdiff_t>(p + k), no_corners());
     }
     for(std::size_t q = 0; q < patch_faces.size(); ++q)
       for(face_descriptor f : patch_faces[q]) face_patch[get(findex, f)] = q;

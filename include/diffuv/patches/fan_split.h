@@ -1,0 +1,537 @@
+// diffuv: a disc region of a mesh split into sectors by a fan of edge paths
+// from one centre vertex to given vertices of its border.
+//
+// This is the operation the four-sided layout is built from
+// (patches/quad_layout.h): a cell is fanned from its centre to the midpoints
+// of its arcs, then the region around each junction is fanned from its own
+// centre to the midpoints on its border. Each cut follows the straight
+// segment from the centre to its target in a mean value flattening of the
+// region (Floater 2003: an embedding, so the segments do not cross), snapped
+// to an edge path; the cuts are vertex-disjoint but for the centre and have no
+// chord (an edge between two of their vertices that are not consecutive), so
+// no triangle of a sector has its three vertices on one cut.
+#ifndef DIFFUV_PATCHES_FAN_SPLIT_H
+#define DIFFUV_PATCHES_FAN_SPLIT_H
+
+#include <CGAL/boost/graph/iterator.h>
+
+#include <boost/graph/graph_traits.hpp>
+
+#include <Eigen/Sparse>
+#include <Eigen/SparseLU>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <functional>
+#include <limits>
+#include <map>
+#include <queue>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+namespace diffuv {
+namespace internal {
+
+/// A disc region of a mesh with local vertex numbers (0 .. #verts-1).
+template <class TriangleMesh>
+struct Local_region {
+  using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
+  using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
+
+  std::vector<face_descriptor> faces;             ///< #F_r entries
+  std::vector<vertex_descriptor> verts;           ///< #V_r entries: local id -> mesh vertex
+  std::vector<std::array<double, 3>> points;      ///< #V_r entries
+  std::vector<std::array<int, 3>> face_verts;     ///< #F_r entries, local ids in the faces' orientation
+  std::vector<std::vector<int>> neighbours;       ///< #V_r entries: vertices joined by an edge of the region
+  std::vector<char> on_border;                    ///< #V_r entries
+  std::vector<int> loop;                          ///< the border, counter-clockwise, local ids
+  std::vector<std::pair<std::size_t, int>> local_of_index;  ///< (mesh vertex index, local id), sorted
+
+  /// The local id of a mesh vertex (by its index), or -1.
+  int local(std::size_t vertex_index) const
+  {
+    const auto it = std::lower_bound(local_of_index.begin(), local_of_index.end(), std::make_pair(vertex_index, -1));
+    return it != local_of_index.end() && it->first == vertex_index ? it->second : -1;
+  }
+
+  double length(int a, int b) const
+  {
+    const auto& p = points[a];
+    const auto& q = points[b];
+    return std::sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]));
+  }
+  bool adjacent(int a, int b) const
+  {
+    return std::find(neighbours[a].begin(), neighbours[a].end(), b) != neighbours[a].end();
+  }
+
+  /// Edge-path distances from `sources` over the region's edges.
+  void dijkstra(const std::vector<int>& sources, std::vector<double>& dist) const
+  {
+    dist.assign(verts.size(), std::numeric_limits<double>::infinity());
+    using Entry = std::pair<double, int>;
+    std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
+    for(int s : sources) {
+      dist[s] = 0;
+      queue.emplace(0., s);
+    }
+    while(!queue.empty()) {
+      const auto [d, i] = queue.top();
+      queue.pop();
+      if(d > dist[i]) continue;
+      for(int j : neighbours[i]) {
+        const double nd = d + length(i, j);
+        if(nd < dist[j]) {
+          dist[j] = nd;
+          queue.emplace(nd, j);
+        }
+      }
+    }
+  }
+};
+
+/// Builds the local region of `faces` whose border is `loop` (counter-
+/// clockwise). `local` is scratch of #V(tm) entries, all -1 on entry and on return.
+///
+/// Local ids follow the vertices' positions (lexicographic), not their
+/// numbering, and the loop starts at its smallest id: every later choice (ties
+/// in a shortest path, the order of a sum) is then the same whatever the order
+/// of the mesh's vertices and faces. `faces` keeps the order given.
+template <class TriangleMesh, class VertexPointMap>
+Local_region<TriangleMesh> make_local_region(
+    const TriangleMesh& tm, VertexPointMap vpm,
+    const std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>& faces,
+    const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& loop, std::vector<int>& local)
+{
+  using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
+  Local_region<TriangleMesh> r;
+  auto vindex = get(boost::vertex_index, tm);
+  r.faces = faces;
+  std::vector<std::pair<std::array<double, 3>, vertex_descriptor>> distinct;
+  for(auto f : faces)
+    for(auto v : CGAL::vertices_around_face(halfedge(f, tm), tm)) {
+      int& l = local[get(vindex, v)];
+      if(l >= 0) continue;
+      l = 0;
+      const auto& p = get(vpm, v);
+      distinct.push_back({{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}, v});
+    }
+  std::stable_sort(distinct.begin(), distinct.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  for(const auto& [point, v] : distinct) {
+    local[get(vindex, v)] = static_cast<int>(r.verts.size());
+    r.verts.push_back(v);
+    r.points.push_back(point);
+  }
+  for(auto f : faces) {
+    std::array<int, 3> fv{};
+    int k = 0;
+    for(auto v : CGAL::vertices_around_face(halfedge(f, tm), tm)) {
+      if(k < 3) fv[k] = local[get(vindex, v)];
+      ++k;
+    }
+    r.face_verts.push_back(fv);
+  }
+  // Neighbour lists in increasing order of id: the order ties are met in.
+  r.neighbours.assign(r.verts.size(), {});
+  for(const auto& fv : r.face_verts)
+    for(int k = 0; k < 3; ++k) {
+      const int a = fv[k], b = fv[(k + 1) % 3];
+      if(!r.adjacent(a, b)) {
+        r.neighbours[a].push_back(b);
+        r.neighbours[b].push_back(a);
+      }
+    }
+  for(auto& list : r.neighbours) std::sort(list.begin(), list.end());
+  r.on_border.assign(r.verts.size(), 0);
+  for(auto v : loop) {
+    r.loop.push_back(local[get(vindex, v)]);
+    r.on_border[r.loop.back()] = 1;
+  }
+  if(!r.loop.empty())
+    std::rotate(r.loop.begin(), std::min_element(r.loop.begin(), r.loop.end()), r.loop.end());
+  r.local_of_index.reserve(r.verts.size());
+  for(std::size_t i = 0; i < r.verts.size(); ++i) r.local_of_index.emplace_back(static_cast<std::size_t>(get(vindex, r.verts[i])), static_cast<int>(i));
+  std::sort(r.local_of_index.begin(), r.local_of_index.end());
+  for(auto v : r.verts) local[get(vindex, v)] = -1;
+  return r;
+}
+
+inline double ccw_gap(double from, double to)
+{
+  double d = to - from;
+  while(d < 0) d += 2 * M_PI;
+  while(d >= 2 * M_PI) d -= 2 * M_PI;
+  return d;
+}
+
+/// A mean value flattening of a disc region (Floater 2003): the border on
+/// the unit circle by arc length, every interior vertex the mean-value-weighted
+/// average of its neighbours. With a convex border and positive weights this
+/// is an embedding. Returns false if the solve failed.
+template <class TriangleMesh>
+bool flatten_region(const Local_region<TriangleMesh>& r, std::vector<double>& X, std::vector<double>& Y)
+{
+  const std::size_t nv = r.verts.size(), n = r.loop.size();
+  X.assign(nv, 0.);
+  Y.assign(nv, 0.);
+  double total = 0;
+  for(std::size_t i = 0; i < n; ++i) total += r.length(r.loop[i], r.loop[(i + 1) % n]);
+  if(!(total > 0)) return false;
+  double s = 0;
+  for(std::size_t i = 0; i < n; ++i) {
+    X[r.loop[i]] = std::cos(2 * M_PI * s / total);
+    Y[r.loop[i]] = std::sin(2 * M_PI * s / total);
+    s += r.length(r.loop[i], r.loop[(i + 1) % n]);
+  }
+  std::vector<int> unknown(nv, -1);
+  int nu = 0;
+  for(std::size_t i = 0; i < nv; ++i)
+    if(!r.on_border[i]) unknown[i] = nu++;
+  if(nu == 0) return true;
+  // w_ij = (tan(a/2) + tan(b/2)) / |x_j - x_i|, with a, b the angles at i of the
+  // two faces of edge ij; tan(a/2) = |u x v| / (|u||v| + u.v).
+  // Sums in an order of the ids (faces by their sorted ids, weights in
+  // increasing neighbour order), so the result does not depend on the order
+  // the faces came in.
+  std::vector<std::array<int, 3>> ordered = r.face_verts;
+  for(auto& fv : ordered) std::rotate(fv.begin(), std::min_element(fv.begin(), fv.end()), fv.end());
+  std::sort(ordered.begin(), ordered.end());
+  std::vector<std::map<int, double>> weight(nv);
+  for(const auto& fv : ordered)
+    for(int e = 0; e < 3; ++e) {
+      const int i = fv[e], a = fv[(e + 1) % 3], b = fv[(e + 2) % 3];
+      if(r.on_border[i]) continue;
+      const auto& p = r.points[i];
+      const auto& pa = r.points[a];
+      const auto& pb = r.points[b];
+      const double ux = pa[0] - p[0], uy = pa[1] - p[1], uz = pa[2] - p[2];
+      const double vx = pb[0] - p[0], vy = pb[1] - p[1], vz = pb[2] - p[2];
+      const double lu = std::sqrt(ux * ux + uy * uy + uz * uz), lv = std::sqrt(vx * vx + vy * vy + vz * vz);
+      const double cx = uy * vz - uz * vy, cy = uz * vx - ux * vz, cz = ux * vy - uy * vx;
+      const double denominator = lu * lv + (ux * vx + uy * vy + uz * vz);
+      if(!(lu > 0 && lv > 0 && denominator > 0)) continue;
+      const double half_tan = std::sqrt(cx * cx + cy * cy + cz * cz) / denominator;
+      weight[i][a] += half_tan / lu;
+      weight[i][b] += half_tan / lv;
+    }
+  std::vector<Eigen::Triplet<double>> triplets;
+  Eigen::VectorXd bx = Eigen::VectorXd::Zero(nu), by = Eigen::VectorXd::Zero(nu);
+  for(std::size_t i = 0; i < nv; ++i) {
+    if(r.on_border[i]) continue;
+    double sum = 0;
+    for(const auto& [j, w] : weight[i]) sum += w;
+    triplets.emplace_back(unknown[i], unknown[i], sum > 0 ? sum : 1.);
+    for(const auto& [j, w] : weight[i]) {
+      if(unknown[j] >= 0) {
+        triplets.emplace_back(unknown[i], unknown[j], -w);
+      } else {
+        bx[unknown[i]] += w * X[j];
+        by[unknown[i]] += w * Y[j];
+      }
+    }
+  }
+  Eigen::SparseMatrix<double> A(nu, nu);
+  A.setFromTriplets(triplets.begin(), triplets.end());
+  Eigen::SparseLU<Eigen::SparseMatrix<double>> lu;
+  lu.compute(A);
+  if(lu.info() != Eigen::Success) return false;
+  const Eigen::VectorXd sx = lu.solve(bx), sy = lu.solve(by);
+  for(std::size_t i = 0; i < nv; ++i)
+    if(unknown[i] >= 0) {
+      X[i] = sx[unknown[i]];
+      Y[i] = sy[unknown[i]];
+    }
+  return true;
+}
+
+/// What a fan split found.
+struct Fan {
+  int centre = -1;                      ///< local id of the centre
+  std::vector<std::vector<int>> cuts;   ///< cut a: centre ... targets[a], local ids
+  std::vector<int> sector_of_face;      ///< #F_r entries: sector s lies between cut s and cut s+1 (counter-clockwise)
+  std::vector<double> opening;          ///< sector s's angle at the centre (radians, in 3D, a third of the way out)
+};
+
+/// Why a fan split failed.
+enum class Fan_failure { none, no_centre, no_cuts, sectors };
+
+/// Splits a disc region by vertex-disjoint edge paths ("cuts") from one
+/// interior centre vertex to each of `targets` (local ids on the loop, in
+/// counter-clockwise order, at least two).
+///
+/// The centre is chosen among interior vertices with room for every cut
+/// (valence at least #targets) near the least-squares centre of the targets
+/// (sum of squared edge-path distances within `centre_tolerance` of the
+/// smallest), the one whose ring best matches the directions of the cuts.
+template <class TriangleMesh>
+Fan_failure fan_split(const Local_region<TriangleMesh>& r, const std::vector<int>& given_targets, Fan& fan,
+                      double centre_tolerance = 1.5, int forced_centre = -1)
+{
+  const std::size_t nv = r.verts.size(), k = given_targets.size();
+  fan = Fan();
+  if(k < 2) return Fan_failure::no_cuts;
+  // Cuts are traced one after the other, each avoiding the earlier ones: start
+  // from the target with the smallest id so that the order, and so the result,
+  // does not depend on where the caller's list starts. `shift` maps back.
+  const std::size_t shift = static_cast<std::size_t>(std::min_element(given_targets.begin(), given_targets.end()) - given_targets.begin());
+  std::vector<int> targets(k);
+  for(std::size_t a = 0; a < k; ++a) targets[a] = given_targets[(a + shift) % k];
+  std::vector<std::vector<double>> target_distance(k);
+  for(std::size_t a = 0; a < k; ++a) r.dijkstra({targets[a]}, target_distance[a]);
+  std::vector<double> spread(nv, std::numeric_limits<double>::infinity());
+  double least = std::numeric_limits<double>::infinity();
+  for(std::size_t i = 0; i < nv; ++i) {
+    if(r.on_border[i]) continue;
+    double sum = 0;
+    for(std::size_t a = 0; a < k; ++a) sum += target_distance[a][i] * target_distance[a][i];
+    spread[i] = sum;
+    least = std::min(least, sum);
+  }
+  std::vector<int> candidates;
+  for(std::size_t i = 0; i < nv; ++i)
+    if(!r.on_border[i] && r.neighbours[i].size() >= k && spread[i] <= centre_tolerance * least)
+      candidates.push_back(static_cast<int>(i));
+  std::sort(candidates.begin(), candidates.end(), [&](int a, int b) { return spread[a] < spread[b]; });
+  if(candidates.size() > 16) candidates.resize(16);
+  if(forced_centre >= 0) {
+    candidates.clear();
+    if(!r.on_border[forced_centre] && r.neighbours[forced_centre].size() >= k) candidates.push_back(forced_centre);
+    least = spread[forced_centre];
+  }
+  if(candidates.empty()) return Fan_failure::no_centre;
+
+  std::vector<double> X, Y;
+  if(!flatten_region(r, X, Y)) return Fan_failure::no_cuts;
+  // A cut's edges cost their flattened length, more the farther they stray
+  // from the straight segment, and more again next to another cut or the border.
+  constexpr double stray_cost = 10.0, crowd_cost = 1.0, centre_cost = 100.0;
+
+  // Cuts from centre zc; `score` says how well its ring fits their directions.
+  auto try_centre = [&](int zc, std::vector<std::vector<int>>& cuts, double& score) -> bool {
+    auto angle = [&](int i) { return std::atan2(Y[i] - Y[zc], X[i] - X[zc]); };
+    std::vector<int> ring = r.neighbours[zc];
+    const std::size_t d = ring.size();
+    std::sort(ring.begin(), ring.end(), [&](int a, int b) { return angle(a) < angle(b); });
+    std::vector<double> ring_angle(d), direction(k);
+    for(std::size_t j = 0; j < d; ++j) ring_angle[j] = angle(ring[j]);
+    for(std::size_t a = 0; a < k; ++a) direction[a] = angle(targets[a]);
+    // Each cut leaves through its own ring vertex, in the targets' cyclic
+    // order, as close as possible to its direction (cyclic dynamic programming).
+    auto deviation = [&](std::size_t a, std::size_t j) {
+      if(r.on_border[ring[j]]) return std::numeric_limits<double>::infinity();
+      const double g = ccw_gap(ring_angle[j], direction[a]);
+      const double dev = std::min(g, 2 * M_PI - g);
+      return dev * dev;
+    };
+    double best = std::numeric_limits<double>::infinity();
+    std::vector<std::size_t> assignment;
+    for(std::size_t j0 = 0; j0 < d; ++j0) {
+      std::vector<std::vector<double>> cost(k, std::vector<double>(d, std::numeric_limits<double>::infinity()));
+      std::vector<std::vector<std::size_t>> from(k, std::vector<std::size_t>(d, 0));
+      cost[0][0] = deviation(0, j0);
+      for(std::size_t a = 1; a < k; ++a)
+        for(std::size_t t = a; t + (k - a) <= d; ++t)
+          for(std::size_t u = a - 1; u < t; ++u) {
+            const double c = cost[a - 1][u] + deviation(a, (j0 + t) % d);
+            if(c < cost[a][t]) {
+              cost[a][t] = c;
+              from[a][t] = u;
+            }
+          }
+      for(std::size_t t = k - 1; t < d; ++t)
+        if(cost[k - 1][t] < best) {
+          best = cost[k - 1][t];
+          assignment.assign(k, 0);
+          std::size_t tb = t;
+          for(std::size_t a = k; a-- > 0;) {
+            assignment[a] = (j0 + tb) % d;
+            if(a > 0) tb = from[a][tb];
+          }
+        }
+    }
+    if(assignment.empty() || !(best < std::numeric_limits<double>::infinity())) return false;
+    score = best;
+    std::vector<int> first(k), reserved_for(nv, -1);
+    for(std::size_t a = 0; a < k; ++a) {
+      first[a] = ring[assignment[a]];
+      if(first[a] == targets[a]) return false; // a cut of one edge: its sectors would be slivers
+      reserved_for[first[a]] = static_cast<int>(a);
+    }
+    // A target with a single interior neighbour: that neighbour is its cut's.
+    for(std::size_t a = 0; a < k; ++a) {
+      int only = -1, count = 0;
+      for(int j : r.neighbours[targets[a]])
+        if(!r.on_border[j]) {
+          only = j;
+          ++count;
+        }
+      if(count == 0 || only == zc) return false;
+      if(count == 1) {
+        if(reserved_for[only] >= 0 && reserved_for[only] != static_cast<int>(a)) return false;
+        reserved_for[only] = static_cast<int>(a);
+      }
+    }
+    std::vector<char> on_cut(nv, 0), crowded(nv, 0);
+    on_cut[zc] = 1;
+    for(std::size_t i = 0; i < nv; ++i)
+      if(r.on_border[i])
+        for(int j : r.neighbours[i]) crowded[j] = 1;
+    cuts.assign(k, {});
+    for(std::size_t a = 0; a < k; ++a) {
+      const int target = targets[a];
+      const double sx = X[target] - X[zc], sy = Y[target] - Y[zc];
+      const double squared_length = sx * sx + sy * sy;
+      if(!(squared_length > 0)) return false;
+      auto stray = [&](int i) {
+        const double px = X[i] - X[zc], py = Y[i] - Y[zc];
+        const double t = std::clamp((px * sx + py * sy) / squared_length, 0.0, 1.0);
+        return std::hypot(px - t * sx, py - t * sy) / std::sqrt(squared_length);
+      };
+      auto usable = [&](int i) {
+        if(i == target) return true;
+        if(r.on_border[i] || on_cut[i]) return false;
+        return reserved_for[i] < 0 || reserved_for[i] == static_cast<int>(a);
+      };
+      std::vector<double> dist(nv, std::numeric_limits<double>::infinity());
+      std::vector<int> prev(nv, -1);
+      using Entry = std::pair<double, int>;
+      std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
+      dist[first[a]] = 0;
+      prev[first[a]] = zc;
+      queue.emplace(0., first[a]);
+      while(!queue.empty()) {
+        const auto [dd, i] = queue.top();
+        queue.pop();
+        if(dd > dist[i]) continue;
+        if(i == target) break;
+        for(int j : r.neighbours[i]) {
+          if(!usable(j) || j == first[a]) continue;
+          const double len = std::hypot(X[i] - X[j], Y[i] - Y[j]);
+          double w = len * (1 + stray_cost * stray(j));
+          if(j != target && crowded[j]) w += crowd_cost * len;
+          if(dd + w < dist[j]) {
+            dist[j] = dd + w;
+            prev[j] = i;
+            queue.emplace(dd + w, j);
+          }
+        }
+      }
+      if(prev[target] < 0) return false;
+      std::vector<int> path;
+      for(int i = target; i != zc; i = prev[i]) path.push_back(i);
+      path.push_back(zc);
+      std::reverse(path.begin(), path.end());
+      // No chord: shortcut an edge between two path vertices that are not consecutive.
+      for(bool changed = true; changed;) {
+        changed = false;
+        for(std::size_t s = 0; s + 2 < path.size() && !changed; ++s)
+          for(std::size_t t = path.size() - 1; t > s + 1 && !changed; --t)
+            if(r.adjacent(path[s], path[t]) && !(s == 0 && t == path.size() - 1)) {
+              path.erase(path.begin() + static_cast<std::ptrdiff_t>(s + 1), path.begin() + static_cast<std::ptrdiff_t>(t));
+              changed = true;
+            }
+      }
+      if(path.size() < 3) return false; // the shortcut made a one-edge cut
+      for(int i : path) {
+        on_cut[i] = 1;
+        for(int j : r.neighbours[i]) crowded[j] = 1;
+      }
+      cuts[a] = std::move(path);
+    }
+    return true;
+  };
+
+  double best_score = std::numeric_limits<double>::infinity();
+  for(int zc : candidates) {
+    std::vector<std::vector<int>> cuts;
+    double score = 0;
+    if(!try_centre(zc, cuts, score)) continue;
+    score += centre_cost * (spread[zc] / least - 1.0);
+    if(score < best_score) {
+      best_score = score;
+      fan.centre = zc;
+      fan.cuts = std::move(cuts);
+    }
+  }
+  if(fan.centre < 0) return Fan_failure::no_cuts;
+
+  // Sectors: faces flooded without crossing a cut edge.
+  auto key = [](int x, int y) { return (static_cast<long long>(std::min(x, y)) << 32) | static_cast<long long>(std::max(x, y)); };
+  std::unordered_map<long long, char> cut_edge;
+  for(const auto& cut : fan.cuts)
+    for(std::size_t s = 0; s + 1 < cut.size(); ++s) cut_edge[key(cut[s], cut[s + 1])] = 1;
+  std::unordered_map<long long, std::array<int, 2>> faces_of_edge;
+  const std::size_t nf = r.face_verts.size();
+  for(std::size_t f = 0; f < nf; ++f)
+    for(int e = 0; e < 3; ++e) {
+      auto it = faces_of_edge.emplace(key(r.face_verts[f][e], r.face_verts[f][(e + 1) % 3]), std::array<int, 2>{-1, -1}).first;
+      (it->second[0] < 0 ? it->second[0] : it->second[1]) = static_cast<int>(f);
+    }
+  std::vector<int> component(nf, -1);
+  std::size_t components = 0;
+  for(std::size_t start = 0; start < nf; ++start) {
+    if(component[start] >= 0) continue;
+    std::vector<int> queue = {static_cast<int>(start)};
+    component[start] = static_cast<int>(components);
+    for(std::size_t q = 0; q < queue.size(); ++q)
+      for(int e = 0; e < 3; ++e) {
+        const long long edge_key = key(r.face_verts[queue[q]][e], r.face_verts[queue[q]][(e + 1) % 3]);
+        if(cut_edge.count(edge_key)) continue;
+        for(int g : faces_of_edge[edge_key])
+          if(g >= 0 && component[g] < 0) {
+            component[g] = static_cast<int>(components);
+            queue.push_back(g);
+          }
+      }
+    ++components;
+  }
+  if(components != k) return Fan_failure::sectors;
+  // Sector a starts counter-clockwise after cut a: it holds the face whose
+  // corners run centre -> (cut a's first vertex) in the faces' orientation.
+  std::vector<int> sector_of_component(k, -1);
+  for(std::size_t f = 0; f < nf; ++f)
+    for(int e = 0; e < 3; ++e)
+      if(r.face_verts[f][e] == fan.centre)
+        for(std::size_t a = 0; a < k; ++a)
+          if(r.face_verts[f][(e + 1) % 3] == fan.cuts[a][1]) sector_of_component[component[f]] = static_cast<int>(a);
+  for(int s : sector_of_component)
+    if(s < 0) return Fan_failure::sectors;
+  fan.sector_of_face.resize(nf);
+  for(std::size_t f = 0; f < nf; ++f)
+    fan.sector_of_face[f] = static_cast<int>((static_cast<std::size_t>(sector_of_component[component[f]]) + shift) % k);
+
+  // Opening of each sector at the centre, a third of the way along the shorter cut.
+  auto point_along = [&](std::size_t a, double d) {
+    double s = 0;
+    for(std::size_t i = 1; i < fan.cuts[a].size(); ++i) {
+      s += r.length(fan.cuts[a][i - 1], fan.cuts[a][i]);
+      if(s >= d) return r.points[fan.cuts[a][i]];
+    }
+    return r.points[fan.cuts[a].back()];
+  };
+  std::vector<double> cut_length(k, 0.);
+  for(std::size_t a = 0; a < k; ++a)
+    for(std::size_t i = 1; i < fan.cuts[a].size(); ++i) cut_length[a] += r.length(fan.cuts[a][i - 1], fan.cuts[a][i]);
+  const auto& pc = r.points[fan.centre];
+  fan.opening.assign(k, 0.);
+  for(std::size_t a = 0; a < k; ++a) {
+    const std::size_t b = (a + 1) % k;
+    const double d = std::min(cut_length[a], cut_length[b]) / 3;
+    const auto pa = point_along(a, d), pb = point_along(b, d);
+    const double ux = pa[0] - pc[0], uy = pa[1] - pc[1], uz = pa[2] - pc[2];
+    const double vx = pb[0] - pc[0], vy = pb[1] - pc[1], vz = pb[2] - pc[2];
+    const double c = (ux * vx + uy * vy + uz * vz) / std::sqrt((ux * ux + uy * uy + uz * uz) * (vx * vx + vy * vy + vz * vz));
+    fan.opening[a] = std::acos(std::clamp(c, -1., 1.));
+  }
+  std::rotate(fan.cuts.rbegin(), fan.cuts.rbegin() + static_cast<std::ptrdiff_t>(shift), fan.cuts.rend());
+  std::rotate(fan.opening.rbegin(), fan.opening.rbegin() + static_cast<std::ptrdiff_t>(shift), fan.opening.rend());
+  return Fan_failure::none;
+}
+
+} // namespace internal
+} // namespace diffuv
+
+#endif // DIFFUV_PATCHES_FAN_SPLIT_H
