@@ -529,7 +529,8 @@ void add_param_command(CLI::App& app)
 {
   auto options = std::make_shared<Param_options>();
   CLI::App* cmd = app.add_subcommand(
-      "param", "Parameterize a mesh patch by patch, each onto the unit square; write OBJ (vt per corner), a uv table, "
+      "param", "Parameterize a mesh patch by patch, each onto a rectangle of its own aspect (--unit-squares: the unit "
+               "square); write OBJ (vt per corner), a uv table, "
                "the patches and a picture");
   add_common_options(cmd, *options);
   cmd->add_flag("--svg", options->svg, "Also write each patch's uv layout as OUTPUT/<mesh>.patch<N>.svg (flipped "

@@ -146,7 +146,15 @@ Status four_sided_patches(const TriangleMesh& tm, std::vector<int> face_labels, 
   }
   // Labelled regions keep their borders: faces move only between their sub-patches.
   if(options.hand_off_flat_faces) r.flat_faces_handed = hand_flat_faces_to_neighbours(tm, seg, vpm, labelled);
-  r.merged += merge_unmappable_patches(tm, seg, vpm);
+  const std::size_t unmappable = merge_unmappable_patches(tm, seg, vpm);
+  r.merged += unmappable;
+  if(unmappable > 0 && r.layout.kept_regions == 0) {
+    // The layout's counts, of the patches left.
+    r.layout.quads = 0;
+    for(std::size_t p = 0; p < seg.number_of_patches(); ++p)
+      if(seg.corners(p)) ++r.layout.quads;
+    r.layout.fallback_patches = seg.number_of_patches() - r.layout.quads;
+  }
   r.not_discs.clear();
   for(std::size_t p = 0; p < seg.number_of_patches(); ++p)
     if(!check_patch_disc(tm, seg, p)) r.not_discs.push_back(p);
