@@ -2,7 +2,11 @@
 # test: runs `diffuv param MESH -o OUT` into a fresh folder and checks that
 # it ends with either
 #   - exit 0, every output file there and not empty, no NaN in the uv table,
-#     nothing on stderr but `diffuv: warning:` lines; or
+#     nothing on stderr but `diffuv: warning:` lines, and every chart
+#     one-to-one (the table's total ends `yes`) unless the input has zero-area
+#     faces (flat in any map) or NOT_INJECTIVE is set (a known exception,
+#     cmake/sweep_tests.cmake; a listed mesh that becomes one-to-one fails
+#     too, so that the list only shrinks); or
 #   - exit 1, stderr exactly one line `diffuv: error: MESH[:LINE]: REASON`,
 #     and no output folder left behind.
 # Anything else fails: a signal, a timeout, another exit code (4 is an internal
@@ -68,6 +72,18 @@ if(rc EQUAL 0)
       fail("exit 0 but ${stem}${ending} is empty")
     endif()
   endforeach()
+  string(REGEX MATCH "\ntotal [^\n]*" total "\n${out}")
+  if(total STREQUAL "")
+    fail("exit 0 but no 'total' line in the patch table")
+  endif()
+  string(FIND "${out}" "zero-area faces" zero_area)
+  if(total MATCHES " yes$")
+    if(NOT_INJECTIVE)
+      fail("every chart is one-to-one now: take this mesh off the NOT_INJECTIVE list in cmake/sweep_tests.cmake")
+    endif()
+  elseif(NOT NOT_INJECTIVE AND zero_area EQUAL -1)
+    fail("a chart is not one-to-one (the table's total line ends 'no'; see its flipped/degen/overlaps columns)")
+  endif()
   file(STRINGS "${OUT}/${stem}.uv.csv" nans REGEX "[Nn][Aa][Nn]|[Ii][Nn][Ff]")
   if(nans)
     list(GET nans 0 first)

@@ -11,11 +11,26 @@ set(DIFFUV_SWEEP_LIMIT 120 CACHE STRING "Seconds one mesh of the sweep may take 
 file(GLOB diffuv_sweep_meshes LIST_DIRECTORIES false "${DIFFUV_DATA_DIR}/meshes/*")
 list(SORT diffuv_sweep_meshes)
 math(EXPR diffuv_sweep_timeout "${DIFFUV_SWEEP_LIMIT} + 60")
+# Meshes whose default atlas still has a chart that is not one-to-one, with
+# the reason measured (doc/layout.md); the sweep checks every other mesh for it.
+set(diffuv_sweep_not_injective
+  b9_mesh.off              # the layout leaves a non-disc: Voronoi patches instead, whose strips fold
+  blobby_3cc.off           # a whole disc component with more ears than corners, no neighbour to take one
+  boeing.off               # CAD strips: fallback patches with more ears than corners
+  cheese.off               # the same, around its holes
+  elephant-with-holes.off  # the same, around its holes
+  lion.off                 # a fallback patch with more ears than corners, its ears next to quads (no hand-off there)
+  mech-holes-shark.off     # CAD strips around holes
+)
 foreach(mesh IN LISTS diffuv_sweep_meshes)
   get_filename_component(name "${mesh}" NAME)
+  set(not_injective 0)
+  if(name IN_LIST diffuv_sweep_not_injective)
+    set(not_injective 1)
+  endif()
   add_test(NAME "sweep.${name}"
            COMMAND ${CMAKE_COMMAND} -DTOOL=$<TARGET_FILE:diffuv_tool> "-DMESH=${mesh}"
                    "-DOUT=${CMAKE_CURRENT_BINARY_DIR}/sweep/${name}" -DLIMIT=${DIFFUV_SWEEP_LIMIT}
-                   -P "${PROJECT_SOURCE_DIR}/cmake/sweep_mesh.cmake")
+                   -DNOT_INJECTIVE=${not_injective} -P "${PROJECT_SOURCE_DIR}/cmake/sweep_mesh.cmake")
   set_tests_properties("sweep.${name}" PROPERTIES LABELS sweep TIMEOUT ${diffuv_sweep_timeout})
 endforeach()

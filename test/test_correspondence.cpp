@@ -311,11 +311,12 @@ TEST(Correspondence, LabelsThatNeedCleaning)
   std::size_t unmapped_clean = 0, unmapped_raw = 0;
   const double clean_error = mean_error(clean_b, unmapped_clean);
   const double raw_error = mean_error(raw_b, unmapped_raw);
-  // Measured: 0.026 cleaned, 0.056 raw (mean error / sqrt(area)); every
+  // Measured: 0.013 cleaned, 0.019 raw (mean error / sqrt(area); 0.026 and
+  // 0.056 before corners were placed so that no triangle is flat); every
   // seventh border face is a harsher noise than a transfer makes.
   EXPECT_EQ(unmapped_clean, 0u);
   EXPECT_LT(clean_error, 0.04);
-  EXPECT_TRUE(unmapped_raw > 0 || raw_error > 1.5 * clean_error)
+  EXPECT_TRUE(unmapped_raw > 0 || raw_error > 1.3 * clean_error)
       << "raw: " << raw_error << " (" << unmapped_raw << " unmapped), cleaned: " << clean_error;
   // The cleaned patches took the corners of A's (named by their regions).
   for(const auto& patch : clean_b.patches) EXPECT_TRUE(patch.side_report.named);

@@ -13,7 +13,9 @@
 //  3. as a last resort every interior vertex is re-solved: with the border on
 //     the convex square and positive weights, Tutte/Floater's theorem makes
 //     that map an embedding. Triangles whose three vertices lie on one side
-//     are flat in any map onto the square; they are "forced" and reported.
+//     are flat in any map onto the square, and so are the triangles around a
+//     group of interior vertices whose border neighbours all lie on one side;
+//     they are "forced" and reported.
 #ifndef DIFFUV_PARAMETERIZATION_REPAIR_FOLDS_H
 #define DIFFUV_PARAMETERIZATION_REPAIR_FOLDS_H
 
@@ -48,7 +50,7 @@ struct Repair_options {
 /// What `repair_folds()` did to one patch (all zero when the repair is off).
 struct Repair_report {
   std::size_t folded_faces = 0;        ///< faces flipped or degenerate, or around a vertex the map winds around twice, before the repair (forced ones excluded)
-  std::size_t forced_degenerate = 0;   ///< faces with all three vertices on one side: flat in any map onto the square
+  std::size_t forced_degenerate = 0;   ///< faces with all three vertices on one side, or around interior vertices whose border neighbours all are: flat in any map onto the square
   std::size_t moved_vertices = 0;      ///< interior vertices whose (u,v) changed
   std::size_t moved_border_vertices = 0;  ///< border vertices re-spaced because their side was not monotone
   std::size_t rounds = 0;              ///< linear solves
@@ -134,6 +136,31 @@ Status repair_folds(const TriangleMesh& tm, VertexPointMap vpm,
     for(std::size_t i : t) faces_of[i].push_back(p.triangle.size());
     p.forced.push_back((p.side_mask[t[0]] & p.side_mask[t[1]] & p.side_mask[t[2]]) != 0);
     p.triangle.push_back(t);
+  }
+  // So are the faces around a connected group of interior vertices whose
+  // border neighbours all lie on one side: a convex combination of points on
+  // a line stays on it (components across interior edges).
+  {
+    std::vector<std::size_t> component(n, n);
+    std::vector<std::size_t> members;
+    for(std::size_t seed = 0; seed < n; ++seed) {
+      if(p.side_mask[seed] || component[seed] < n || faces_of[seed].empty()) continue;
+      members.assign(1, seed);
+      component[seed] = seed;
+      std::uint8_t common = 0xF;
+      for(std::size_t k = 0; k < members.size(); ++k)
+        for(std::size_t f : faces_of[members[k]])
+          for(std::size_t j : p.triangle[f]) {
+            if(p.side_mask[j]) common &= p.side_mask[j];
+            else if(component[j] == n) {
+              component[j] = seed;
+              members.push_back(j);
+            }
+          }
+      if(common)
+        for(std::size_t i : members)
+          for(std::size_t f : faces_of[i]) p.forced[f] = true;
+    }
   }
   r.forced_degenerate = static_cast<std::size_t>(std::count(p.forced.begin(), p.forced.end(), true));
   const std::vector<double> u0 = u, v0 = v;

@@ -60,7 +60,10 @@ flat_faces(const TriangleMesh& tm, const Segmentation<TriangleMesh>& seg, std::s
 /// ears included) to a neighbouring patch across one of its edges, when the
 /// patches it touches all stay discs with four sides, have fewer flat faces
 /// together, and keep their corners except for moves onto the face's own
-/// vertices (so a hand-off never re-routes a side far from the face). Patches are visited in order, a patch's flat faces by
+/// vertices (so a hand-off never re-routes a side far from the face). Faces
+/// still flat after that may then also go to a neighbour with corners moved
+/// anywhere. A face in or next to a quad of the layout (corners chosen by
+/// the layout) is never handed: the layout stays conforming. Patches are visited in order, a patch's flat faces by
 /// their centroids, neighbours in patch order, so the result depends only on
 /// the segmentation and the geometry. Labels and the number and
 /// order of patches are unchanged; a handed face takes its new patch's label.
@@ -107,84 +110,95 @@ std::size_t hand_flat_faces_to_neighbours(const TriangleMesh& tm, Segmentation<T
     seg.face_patch[get(findex, f)] = from;
   };
 
+  // First only hand-offs that keep every corner near the face; then, for
+  // faces still flat (no corner placement can mend them: more ears than
+  // corners, measured on anchor), also hand-offs wherever the corners go: a
+  // chart with a flat triangle is not one-to-one, which no distortion
+  // outweighs. Never in or next to a quad of the layout.
   std::size_t handed = 0;
-  for(std::size_t round = 0; round < max_rounds; ++round) {
-    std::size_t this_round = 0;
-    for(std::size_t p = 0; p < seg.number_of_patches(); ++p) {
-      if(count_flat(p) == unusable || flat.empty()) continue;
-      // In the order of their centroids, not of their indices: the result
-      // then does not depend on the face numbering.
-      std::vector<std::pair<std::array<double, 3>, face_descriptor>> candidates;
-      for(face_descriptor f : flat) {
-        std::array<double, 3> c{0., 0., 0.};
-        for(auto v : CGAL::vertices_around_face(halfedge(f, tm), tm)) {
-          const auto q = get(vpm, v);
-          c[0] += CGAL::to_double(q.x());
-          c[1] += CGAL::to_double(q.y());
-          c[2] += CGAL::to_double(q.z());
+  for(const bool near_only : {true, false}) {
+    for(std::size_t round = 0; round < max_rounds; ++round) {
+      std::size_t this_round = 0;
+      for(std::size_t p = 0; p < seg.number_of_patches(); ++p) {
+        if(count_flat(p) == unusable || flat.empty()) continue;
+        // In the order of their centroids, not of their indices: the result
+        // then does not depend on the face numbering.
+        std::vector<std::pair<std::array<double, 3>, face_descriptor>> candidates;
+        for(face_descriptor f : flat) {
+          std::array<double, 3> c{0., 0., 0.};
+          for(auto v : CGAL::vertices_around_face(halfedge(f, tm), tm)) {
+            const auto q = get(vpm, v);
+            c[0] += CGAL::to_double(q.x());
+            c[1] += CGAL::to_double(q.y());
+            c[2] += CGAL::to_double(q.z());
+          }
+          candidates.emplace_back(c, f);
         }
-        candidates.emplace_back(c, f);
+        std::sort(candidates.begin(), candidates.end(),
+                  [](const auto& a, const auto& b) { return a.first < b.first; });
+        for(const auto& candidate : candidates) {
+          const face_descriptor f = candidate.second;
+          if(seg.face_patch[get(findex, f)] != p) continue;
+          // Every patch across an edge of f: their sides may change with the move.
+          std::vector<std::size_t> touched;
+          for(auto h : CGAL::halfedges_around_face(halfedge(f, tm), tm)) {
+            const face_descriptor g = face(opposite(h, tm), tm);
+            if(g != boost::graph_traits<TriangleMesh>::null_face() && seg.face_patch[get(findex, g)] != p)
+              touched.push_back(seg.face_patch[get(findex, g)]);
+          }
+          std::sort(touched.begin(), touched.end());
+          touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
+          // The flat faces of p and the touched patches together, and their
+          // corners (p's first, then the touched patches' in order).
+          std::vector<vertex_descriptor> all_corners;
+          auto total_flat = [&]() {
+            all_corners.clear();
+            std::size_t total = 0;
+            for(std::size_t k = 0; k <= touched.size(); ++k) {
+              const std::size_t c = count_flat(k == 0 ? p : touched[k - 1]);
+              if(c == unusable) return unusable;
+              total += c;
+              all_corners.insert(all_corners.end(), corners.begin(), corners.end());
+            }
+            return total;
+          };
+          const std::size_t before = total_flat();
+          if(before == unusable) continue;
+          const std::vector<vertex_descriptor> corners_before = all_corners;
+          std::vector<vertex_descriptor> face_vertices;
+          for(vertex_descriptor v : CGAL::vertices_around_face(halfedge(f, tm), tm)) face_vertices.push_back(v);
+          // The move must stay local: a corner may only go to a vertex of f.
+          // Without this, a new run of neighbours at f can re-route a patch's
+          // side rule and move its corners far away (measured on man with
+          // height bands: a patch's mean angle distortion from 2.8 to 61).
+          // (Four corners per patch, in the same patch order before and after.)
+          auto corners_stay = [&]() {
+            for(std::size_t k = 0; k < all_corners.size(); ++k) {
+              const auto old_begin = corners_before.begin() + static_cast<std::ptrdiff_t>(k / 4 * 4);
+              if(std::find(old_begin, old_begin + 4, all_corners[k]) == old_begin + 4 &&
+                 std::find(face_vertices.begin(), face_vertices.end(), all_corners[k]) == face_vertices.end())
+                return false;
+            }
+            return true;
+          };
+          for(std::size_t q : touched) {
+            if(keep_labels && seg.patch_label[q] != seg.patch_label[p]) continue;
+            // A quad of the layout keeps its faces and its neighbours along
+            // its sides: a hand-off there would give a side two patches.
+            if(seg.corners(p) || std::any_of(touched.begin(), touched.end(), [&](std::size_t t) { return seg.corners(t) != nullptr; }))
+              continue;
+            const std::size_t position = move(f, p, q);
+            if(total_flat() < before && (!near_only || corners_stay())) {
+              ++this_round;
+              break;
+            }
+            move_back(f, p, q, position);
+          }
+        }
       }
-      std::sort(candidates.begin(), candidates.end(),
-                [](const auto& a, const auto& b) { return a.first < b.first; });
-      for(const auto& candidate : candidates) {
-        const face_descriptor f = candidate.second;
-        if(seg.face_patch[get(findex, f)] != p) continue;
-        // Every patch across an edge of f: their sides may change with the move.
-        std::vector<std::size_t> touched;
-        for(auto h : CGAL::halfedges_around_face(halfedge(f, tm), tm)) {
-          const face_descriptor g = face(opposite(h, tm), tm);
-          if(g != boost::graph_traits<TriangleMesh>::null_face() && seg.face_patch[get(findex, g)] != p)
-            touched.push_back(seg.face_patch[get(findex, g)]);
-        }
-        std::sort(touched.begin(), touched.end());
-        touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
-        // The flat faces of p and the touched patches together, and their
-        // corners (p's first, then the touched patches' in order).
-        std::vector<vertex_descriptor> all_corners;
-        auto total_flat = [&]() {
-          all_corners.clear();
-          std::size_t total = 0;
-          for(std::size_t k = 0; k <= touched.size(); ++k) {
-            const std::size_t c = count_flat(k == 0 ? p : touched[k - 1]);
-            if(c == unusable) return unusable;
-            total += c;
-            all_corners.insert(all_corners.end(), corners.begin(), corners.end());
-          }
-          return total;
-        };
-        const std::size_t before = total_flat();
-        if(before == unusable) continue;
-        const std::vector<vertex_descriptor> corners_before = all_corners;
-        std::vector<vertex_descriptor> face_vertices;
-        for(vertex_descriptor v : CGAL::vertices_around_face(halfedge(f, tm), tm)) face_vertices.push_back(v);
-        // The move must stay local: a corner may only go to a vertex of f.
-        // Without this, a new run of neighbours at f can re-route a patch's
-        // side rule and move its corners far away (measured on man with
-        // height bands: a patch's mean angle distortion from 2.8 to 61).
-        // (Four corners per patch, in the same patch order before and after.)
-        auto corners_stay = [&]() {
-          for(std::size_t k = 0; k < all_corners.size(); ++k) {
-            const auto old_begin = corners_before.begin() + static_cast<std::ptrdiff_t>(k / 4 * 4);
-            if(std::find(old_begin, old_begin + 4, all_corners[k]) == old_begin + 4 &&
-               std::find(face_vertices.begin(), face_vertices.end(), all_corners[k]) == face_vertices.end())
-              return false;
-          }
-          return true;
-        };
-        for(std::size_t q : touched) {
-          if(keep_labels && seg.patch_label[q] != seg.patch_label[p]) continue;
-          const std::size_t position = move(f, p, q);
-          if(total_flat() < before && corners_stay()) {
-            ++this_round;
-            break;
-          }
-          move_back(f, p, q, position);
-        }
-      }
+      handed += this_round;
+      if(this_round == 0) break;
     }
-    handed += this_round;
-    if(this_round == 0) break;
   }
   return handed;
 }

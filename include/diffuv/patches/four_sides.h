@@ -33,6 +33,7 @@
 #include <limits>
 #include <map>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace diffuv {
@@ -211,19 +212,29 @@ equal_arc_corners(const TriangleMesh& tm, VertexPointMap vpm,
 ///
 /// Such a triangle (an "ear" of the border, or a face cut off by a chord) is
 /// flat in any map that sends each side onto a straight edge of the square.
-/// Its middle vertex along the side becomes a corner: one of the side's two
-/// corners moves there, whichever leaves fewer such triangles; this repeats
-/// while it helps (a border of ears only cannot be helped). The corners keep
-/// their cyclic order and stay distinct. Among moves that leave as few flat
-/// triangles, the one that moves a corner the shortest arc length wins, so
-/// the result does not depend on where the loop starts (nor on vertex order).
+/// So are the triangles around interior vertices whose border neighbours all
+/// lie on one side and that reach no other interior vertex (a valence-3
+/// vertex next to the border, measured on bull; a fin of several, on pinion):
+/// a convex combination of points on a line stays on it. Each such set of
+/// border positions (a face's three, the border neighbours of a connected
+/// group of interior vertices) must not lie on one side.
+///
+/// First, greedily, the middle vertex of a flat set along its side becomes a
+/// corner: one of the side's two corners moves there, whichever leaves fewer
+/// flat sets; this repeats while it helps. Where that gets stuck (moving a
+/// corner onto one ear makes another face flat, measured on cow and man), every
+/// placement of the four corners within a few positions of where they
+/// started is tried, and the one with fewest flat sets, then the shortest total
+/// move, wins. The corners keep their cyclic order and stay distinct. Among
+/// moves that leave as few flat sets, the shortest arc length wins, so the
+/// result does not depend on where the loop starts (nor on vertex order).
 ///
 /// \tparam FaceGraph a model of `FaceGraph`
 /// \tparam InPatch a predicate on faces: whether a face belongs to the patch bounded by `loop`
 /// \param loop the patch's boundary, counter-clockwise
 /// \param corners four positions in `loop`, in counter-clockwise order; updated
 /// \param edge_lengths n entries: length of the loop edge from position i to i+1
-/// \returns how many times a corner moved
+/// \returns how many times a corner moved (0 if none did)
 template <class FaceGraph, class InPatch>
 std::size_t separate_flat_triangles(const FaceGraph& g,
                                     const std::vector<typename boost::graph_traits<FaceGraph>::vertex_descriptor>& loop,
@@ -235,59 +246,104 @@ std::size_t separate_flat_triangles(const FaceGraph& g,
   std::map<vertex_descriptor, std::size_t> position;
   for(std::size_t i = 0; i < n; ++i) position.emplace(loop[i], i);
 
-  // The faces with three border vertices, as loop positions.
-  std::vector<std::array<std::size_t, 3>> border_faces;
+  // The sets of border positions that must not lie on one side: the faces
+  // with three border vertices, and the links of interior vertices whose
+  // neighbours are all border vertices.
+  std::vector<std::vector<std::size_t>> border_sets;
+  std::vector<vertex_descriptor> inner;  // interior vertices next to the border
   for(std::size_t i = 0; i < n; ++i)
     for(auto h : CGAL::halfedges_around_target(halfedge(loop[i], g), g)) {
       if(is_border(h, g) || !in_patch(face(h, g))) continue;
-      std::array<std::size_t, 3> t{};
-      std::size_t k = 0;
-      bool on_border = true;
+      std::vector<std::size_t> t;
       for(vertex_descriptor v : CGAL::vertices_around_face(h, g)) {
         const auto it = position.find(v);
-        if(it == position.end() || k == 3) { on_border = false; break; }
-        t[k++] = it->second;
+        if(it == position.end()) inner.push_back(v);
+        else t.push_back(it->second);
       }
-      if(on_border && k == 3) border_faces.push_back(t);
+      if(t.size() == 3) border_sets.push_back(t);
     }
-  // Each such face is met from each of its vertices; keep it once.
-  for(auto& t : border_faces) std::sort(t.begin(), t.end());
-  std::sort(border_faces.begin(), border_faces.end());
-  border_faces.erase(std::unique(border_faces.begin(), border_faces.end()), border_faces.end());
+  // The interior vertices next to the border, grouped into connected
+  // components across interior edges: a convex combination map puts a whole
+  // component on a side's line when all its border neighbours lie on that
+  // side (a fin of interior vertices hanging off one side, measured on
+  // pinion and turbine). A component larger than the border (the patch's
+  // main interior, in practice never on one side) is left out, so this stays
+  // cheap on a large disc.
+  std::sort(inner.begin(), inner.end());
+  inner.erase(std::unique(inner.begin(), inner.end()), inner.end());
+  const std::size_t max_component = std::max<std::size_t>(n, 64);
+  std::map<vertex_descriptor, std::size_t> seen;  // interior vertex -> the search that met it
+  for(std::size_t k = 0; k < inner.size(); ++k) {
+    if(!seen.emplace(inner[k], k).second) continue;
+    std::vector<std::size_t> attached;
+    std::vector<vertex_descriptor> stack = {inner[k]};
+    std::size_t size = 1;
+    // A search stopped early leaves its component unfinished: meeting one of
+    // its vertices means this is the same large component.
+    bool large = false;
+    while(!stack.empty() && !large) {
+      const vertex_descriptor v = stack.back();
+      stack.pop_back();
+      for(auto h : CGAL::halfedges_around_target(halfedge(v, g), g)) {
+        const vertex_descriptor w = source(h, g);
+        const auto it = position.find(w);
+        if(it != position.end()) {
+          attached.push_back(it->second);
+          continue;
+        }
+        const auto met = seen.emplace(w, k);
+        if(met.second) {
+          stack.push_back(w);
+          large = ++size > max_component;
+        } else if(met.first->second != k) {
+          large = true;
+        }
+      }
+    }
+    std::sort(attached.begin(), attached.end());
+    attached.erase(std::unique(attached.begin(), attached.end()), attached.end());
+    if(!large && attached.size() >= 3) border_sets.push_back(attached);
+  }
+  // Each face is met from each of its vertices; keep every set once.
+  for(auto& t : border_sets) std::sort(t.begin(), t.end());
+  std::sort(border_sets.begin(), border_sets.end());
+  border_sets.erase(std::unique(border_sets.begin(), border_sets.end()), border_sets.end());
+  if(border_sets.empty()) return 0;
 
-  // A face is flat if its three positions lie on one side; returns that side or 4.
-  auto flat_side = [&](const std::array<std::size_t, 3>& t, const std::array<std::size_t, 4>& c) {
+  // A set is flat if its positions lie on one side; returns that side or 4.
+  auto flat_side = [&](const std::vector<std::size_t>& t, const std::array<std::size_t, 4>& c) {
     for(std::size_t s = 0; s < 4; ++s) {
       const std::size_t length = (c[(s + 1) % 4] + n - c[s]) % n;
-      if((t[0] + n - c[s]) % n <= length && (t[1] + n - c[s]) % n <= length && (t[2] + n - c[s]) % n <= length)
-        return s;
+      if(std::all_of(t.begin(), t.end(), [&](std::size_t i) { return (i + n - c[s]) % n <= length; })) return s;
     }
     return std::size_t(4);
   };
   auto count_flat = [&](const std::array<std::size_t, 4>& c) {
     std::size_t count = 0;
-    for(const auto& t : border_faces) count += flat_side(t, c) < 4;
+    for(const auto& t : border_sets) count += flat_side(t, c) < 4;
     return count;
   };
 
-  // Greedy: move one of the two corners of a flat face's side onto the face's
-  // middle vertex, whichever leaves fewer flat faces; stop when no move helps
-  // (e.g. a border made of ears only), so this always terminates.
   std::vector<double> at(n + 1, 0.);  // arc length at each loop position
   for(std::size_t i = 0; i < n; ++i) at[i + 1] = at[i] + edge_lengths[i];
   auto arc = [&](std::size_t a, std::size_t b) { return b >= a ? at[b] - at[a] : at[n] - at[a] + at[b]; };
+  const std::array<std::size_t, 4> start = corners;
   std::size_t moves = 0;
-  for(std::size_t flat = count_flat(corners); flat > 0;) {
+  std::size_t flat = count_flat(corners);
+
+  // Greedy: move one of the two corners of a flat set's side onto the set's
+  // middle position, whichever leaves fewer flat sets; stop when no move helps.
+  while(flat > 0) {
     std::size_t best_flat = flat;
     double best_shift = std::numeric_limits<double>::infinity();
     std::array<std::size_t, 4> best = corners;
-    for(const auto& t : border_faces) {
+    for(const auto& t : border_sets) {
       const std::size_t s = flat_side(t, corners);
       if(s == 4) continue;
-      std::array<std::size_t, 3> offset;
-      for(int k = 0; k < 3; ++k) offset[k] = (t[k] + n - corners[s]) % n;
+      std::vector<std::size_t> offset;
+      for(std::size_t i : t) offset.push_back((i + n - corners[s]) % n);
       std::sort(offset.begin(), offset.end());
-      const std::size_t middle = (corners[s] + offset[1]) % n;  // strictly inside the side
+      const std::size_t middle = (corners[s] + offset[offset.size() / 2]) % n;  // strictly inside the side
       for(std::size_t c : {s, (s + 1) % 4}) {
         std::array<std::size_t, 4> candidate = corners;
         candidate[c] = middle;
@@ -304,6 +360,88 @@ std::size_t separate_flat_triangles(const FaceGraph& g,
     if(best_flat == flat) break;
     corners = best;
     flat = best_flat;
+    ++moves;
+  }
+  if(flat == 0) return moves;
+
+  // Stuck: the placement that leaves no flat set and moves the corners the
+  // shortest total arc length from where they started, if there is one. A
+  // set S is not flat iff, for each gap between cyclically consecutive
+  // positions of S, a corner lies strictly on the other side of the gap (in
+  // the open arc from the gap's end round to its start). With corner 0 fixed,
+  // the loop unrolls to a line of offsets from it and each such arc not
+  // holding corner 0 is an interval that corners 1-3 must hit: a dynamic
+  // programme over the offsets of corners 1, 2, 3 in increasing order.
+  constexpr std::size_t none = std::numeric_limits<std::size_t>::max();
+  // Arc lengths from each start corner, summed from that corner (not from
+  // the loop's first vertex), so that equal placements cost exactly the same
+  // wherever the loop starts; ties go to the smallest signed moves.
+  std::array<std::vector<double>, 4> ahead, behind;
+  for(std::size_t k = 0; k < 4; ++k) {
+    ahead[k].assign(n, 0.);
+    behind[k].assign(n, 0.);
+    for(std::size_t step = 0; step + 1 < n; ++step) {
+      const std::size_t i = (start[k] + step) % n, j = (start[k] + n - step) % n;
+      ahead[k][(i + 1) % n] = ahead[k][i] + edge_lengths[i];
+      behind[k][(j + n - 1) % n] = behind[k][j] + edge_lengths[(j + n - 1) % n];
+    }
+  }
+  auto move_of = [&](std::size_t k, std::size_t x) { return ahead[k][x] <= behind[k][x] ? ahead[k][x] : -behind[k][x]; };
+  auto placement_key = [&](const std::array<std::size_t, 4>& c, double cost) {
+    return std::make_tuple(cost, move_of(0, c[0]), move_of(1, c[1]), move_of(2, c[2]), move_of(3, c[3]));
+  };
+  std::vector<std::pair<std::size_t, std::size_t>> arcs;  // open arcs (from, to) that need a corner
+  for(const auto& t : border_sets)
+    for(std::size_t i = 0; i < t.size(); ++i) arcs.emplace_back(t[(i + 1) % t.size()], t[i]);
+  const double infinity = std::numeric_limits<double>::infinity();
+  double best_cost = infinity;
+  std::array<std::size_t, 4> best = corners;
+  // Corner 0 anywhere on a short loop (O(n^3) in all), else within 12
+  // positions of where it started.
+  const std::size_t reach = 12, tries = n <= 64 ? n : 2 * reach + 1;
+  for(std::size_t step = 0; step < tries; ++step) {
+    const std::size_t x0 = n <= 64 ? step : (start[0] + n - reach + step) % n;
+    // limit[x]: the largest offset the next corner may take after one at
+    // offset x (an interval (lo, hi) with lo >= x needs a corner below hi).
+    std::vector<std::size_t> limit(n + 1, none);
+    for(const auto& [from, to] : arcs) {
+      const std::size_t lo = (from + n - x0) % n, hi = to == x0 ? n : (to + n - x0) % n;
+      if(lo < hi && hi - lo >= 2) limit[lo] = std::min(limit[lo], hi - 1);
+      else if(lo < hi) limit[lo] = 0;  // an empty open interval: no placement hits it
+    }
+    for(std::size_t x = n; x-- > 0;) limit[x] = std::min(limit[x], limit[x + 1]);
+    // cost[k][x]: corners 1..k placed, corner k at offset x.
+    std::array<std::vector<double>, 4> cost;
+    std::array<std::vector<std::size_t>, 4> from;
+    for(auto& c : cost) c.assign(n, infinity);
+    for(auto& f : from) f.assign(n, none);
+    cost[0][0] = std::abs(move_of(0, x0));
+    for(std::size_t k = 1; k < 4; ++k)
+      for(std::size_t x = 1; x < n; ++x) {
+        for(std::size_t y = 0; y < x; ++y)
+          if(cost[k - 1][y] < infinity && x <= limit[y] && cost[k - 1][y] < cost[k][x]) {
+            cost[k][x] = cost[k - 1][y];
+            from[k][x] = y;
+          }
+        if(cost[k][x] < infinity) cost[k][x] += std::abs(move_of(k, (x0 + x) % n));
+      }
+    for(std::size_t x = 1; x < n; ++x) {
+      if(!(cost[3][x] < infinity) || limit[x] != none) continue;
+      std::array<std::size_t, 4> candidate{};
+      std::size_t y = x;
+      for(std::size_t k = 4; k-- > 1;) {
+        candidate[k] = (x0 + y) % n;
+        y = from[k][y];
+      }
+      candidate[0] = x0;
+      if(best_cost == infinity || placement_key(candidate, cost[3][x]) < placement_key(best, best_cost)) {
+        best_cost = cost[3][x];
+        best = candidate;
+      }
+    }
+  }
+  if(best_cost < infinity && best != corners) {
+    corners = best;
     ++moves;
   }
   return moves;

@@ -81,8 +81,9 @@ struct Side_report {
 /// (painted, transferred) then still get the same corners, where the rule's
 /// choices among nearly equal run lengths could differ.
 ///
-/// With `move_off_ears` (default), a corner may then move onto the tip of an
-/// ear so that no triangle is flat (`separate_flat_triangles()`); such a move
+/// With `move_off_ears` (default), a corner (the layout's too) may then move
+/// onto the tip of an ear, or a few vertices along the border, so that no
+/// triangle is flat (`separate_flat_triangles()`); such a move
 /// can go half a side away, so correspondence turns it off on both meshes.
 ///
 /// \pre patch `p` is a topological disc (`check_patch_disc()`)
@@ -105,9 +106,24 @@ Status region_sides(const TriangleMesh& tm, const Segmentation<TriangleMesh>& se
   for(std::size_t i = 0; i < n; ++i)
     if(loop.neighbour[(i + n - 1) % n] != loop.neighbour[i]) ++r.runs;
   if(const auto* chosen = seg.corners(p)) {
-    // The layout chose them; (0,0) first, the others in counter-clockwise order.
+    // The layout chose them; (0,0) first, the others in counter-clockwise
+    // order. Where they would leave a triangle flat (a quad whose corner sits
+    // next to an ear, measured on elephant), that patch's corners move.
     r.chosen = true;
-    return sides_from_corners(loop.vertices, std::vector<vertex_descriptor>(chosen->begin(), chosen->end()), sides);
+    std::vector<vertex_descriptor> given(chosen->begin(), chosen->end());
+    std::array<std::size_t, 4> at{};
+    bool on_loop = true;
+    for(std::size_t c = 0; c < 4 && on_loop; ++c) {
+      at[c] = static_cast<std::size_t>(std::find(loop.vertices.begin(), loop.vertices.end(), given[c]) - loop.vertices.begin());
+      on_loop = at[c] < n;
+    }
+    if(on_loop && move_off_ears) {
+      const auto fim = get(boost::face_index, tm);
+      r.moved = separate_flat_triangles(tm, loop.vertices, at, [&](auto f) { return seg.face_patch[get(fim, f)] == p; },
+                                        loop.length);
+      for(std::size_t c = 0; c < 4; ++c) given[c] = loop.vertices[at[c]];
+    }
+    return sides_from_corners(loop.vertices, given, sides);
   }
 
   std::vector<double> at(n + 1, 0.); // arc length at each loop position

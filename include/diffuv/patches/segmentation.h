@@ -399,6 +399,42 @@ std::size_t smooth_region_borders(
   return changed;
 }
 
+namespace internal {
+
+// The position in `region` of the face whose centroid (`centroids`, one per
+// face of `region`) is farthest from the region's area-weighted centroid,
+// `before(i, j)` deciding ties: the first seed of farthest-point sampling, the
+// same face whatever the numbering, the position or the orientation of the mesh.
+template <class TriangleMesh, class VertexPointMap, class Point, class Before>
+std::size_t farthest_from_area_centroid(const TriangleMesh& tm,
+                                        const std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>& region,
+                                        VertexPointMap vpm, const std::vector<Point>& centroids, Before before)
+{
+  double cx = 0, cy = 0, cz = 0, area = 0;
+  for(std::size_t i = 0; i < region.size(); ++i) {
+    const double a = CGAL::to_double(CGAL::Polygon_mesh_processing::face_area(region[i], tm, CGAL::parameters::vertex_point_map(vpm)));
+    cx += a * CGAL::to_double(centroids[i].x());
+    cy += a * CGAL::to_double(centroids[i].y());
+    cz += a * CGAL::to_double(centroids[i].z());
+    area += a;
+  }
+  if(area > 0) { cx /= area; cy /= area; cz /= area; }
+  std::size_t first = 0;
+  double far = -1;
+  for(std::size_t i = 0; i < region.size(); ++i) {
+    const double dx = CGAL::to_double(centroids[i].x()) - cx, dy = CGAL::to_double(centroids[i].y()) - cy,
+                 dz = CGAL::to_double(centroids[i].z()) - cz;
+    const double d = dx * dx + dy * dy + dz * dz;
+    if(d > far || (d == far && before(i, first))) {
+      far = d;
+      first = i;
+    }
+  }
+  return first;
+}
+
+} // namespace internal
+
 /// Options of `voronoi_discs()`.
 struct Voronoi_options {
   std::size_t patches = 12;       ///< how many seeds to start from (farthest-point sampling)
@@ -439,6 +475,8 @@ std::size_t voronoi_discs(const TriangleMesh& tm,
     auto h = halfedge(f, tm);
     return CGAL::centroid(get(vpm, source(h, tm)), get(vpm, target(h, tm)), get(vpm, target(next(h, tm), tm)));
   };
+  std::vector<Point_of<VertexPointMap>> centroids;
+  for(std::size_t i = 0; i < n; ++i) centroids.push_back(centroid(region[i]));
   Dual dual(n);
   for(std::size_t i = 0; i < n; ++i)
     for(auto h : CGAL::halfedges_around_face(halfedge(region[i], tm), tm)) {
@@ -446,7 +484,7 @@ std::size_t voronoi_discs(const TriangleMesh& tm,
       if(g == boost::graph_traits<TriangleMesh>::null_face()) continue;
       const std::size_t j = local[get(findex, g)];
       if(j < n && i < j)
-        boost::add_edge(i, j, std::sqrt(CGAL::to_double(CGAL::squared_distance(centroid(region[i]), centroid(region[j])))), dual);
+        boost::add_edge(i, j, std::sqrt(CGAL::to_double(CGAL::squared_distance(centroids[i], centroids[j]))), dual);
     }
 
   Multi_source_dijkstra<Dual> dijkstra(dual);
@@ -465,31 +503,9 @@ std::size_t voronoi_discs(const TriangleMesh& tm,
   };
   auto all = [](std::size_t) { return true; };
 
-  // The first seed: the face whose centroid is farthest from the region's
-  // area-weighted centroid (lowest index on a tie) — the same face whatever
-  // the vertex or face order, the position or the orientation of the mesh.
-  double cx = 0, cy = 0, cz = 0, area = 0;
-  std::vector<Point_of<VertexPointMap>> centroids;
-  for(std::size_t i = 0; i < n; ++i) {
-    centroids.push_back(centroid(region[i]));
-    const double a = CGAL::to_double(CGAL::Polygon_mesh_processing::face_area(region[i], tm, CGAL::parameters::vertex_point_map(vpm)));
-    cx += a * CGAL::to_double(centroids[i].x());
-    cy += a * CGAL::to_double(centroids[i].y());
-    cz += a * CGAL::to_double(centroids[i].z());
-    area += a;
-  }
-  if(area > 0) { cx /= area; cy /= area; cz /= area; }
-  std::size_t first_seed = 0;
-  double far = -1;
-  for(std::size_t i = 0; i < n; ++i) {
-    const double dx = CGAL::to_double(centroids[i].x()) - cx, dy = CGAL::to_double(centroids[i].y()) - cy,
-                 dz = CGAL::to_double(centroids[i].z()) - cz;
-    const double d = dx * dx + dy * dy + dz * dz;
-    if(d > far || (d == far && get(findex, region[i]) < get(findex, region[first_seed]))) {
-      far = d;
-      first_seed = i;
-    }
-  }
+  // The first seed (lowest face index on a tie).
+  const std::size_t first_seed = internal::farthest_from_area_centroid(
+      tm, region, vpm, centroids, [&](std::size_t i, std::size_t j) { return get(findex, region[i]) < get(findex, region[j]); });
   std::vector<std::size_t> seeds = {first_seed};
   const std::size_t target = options.patches > 0 ? options.patches : 1;
   dijkstra.run(seeds, weight, dmap, omap);

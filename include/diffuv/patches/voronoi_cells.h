@@ -160,25 +160,8 @@ public:
   void farthest_point_seeds(std::size_t count)
   {
     if(faces_.empty()) return;
-    double cx = 0, cy = 0, cz = 0, area = 0;
-    for(std::size_t i = 0; i < faces_.size(); ++i) {
-      const double a = CGAL::to_double(
-          CGAL::Polygon_mesh_processing::face_area(faces_[i], tm_, CGAL::parameters::vertex_point_map(vpm_)));
-      cx += a * CGAL::to_double(centroids_[i].x());
-      cy += a * CGAL::to_double(centroids_[i].y());
-      cz += a * CGAL::to_double(centroids_[i].z());
-      area += a;
-    }
-    if(area > 0) { cx /= area; cy /= area; cz /= area; }
-    std::size_t first = 0;
-    double far = -1;
-    for(std::size_t i = 0; i < faces_.size(); ++i) {
-      const double dx = CGAL::to_double(centroids_[i].x()) - cx, dy = CGAL::to_double(centroids_[i].y()) - cy,
-                   dz = CGAL::to_double(centroids_[i].z()) - cz;
-      const double d = dx * dx + dy * dy + dz * dz;
-      if(d > far || (d == far && centroids_[i] < centroids_[first])) { far = d; first = i; }
-    }
-    set_seeds({first});
+    set_seeds({internal::farthest_from_area_centroid(
+        tm_, faces_, vpm_, centroids_, [&](std::size_t i, std::size_t j) { return centroids_[i] < centroids_[j]; })});
     auto all = [](std::size_t) { return true; };
     while(seeds_.size() < std::min(count, faces_.size())) {
       const std::size_t s = farthest(all);
