@@ -281,35 +281,50 @@ TEST(QuadLayout, JudgeFindsThePatchesWhoseMapIsBad)
   EXPECT_TRUE(judge(laid).empty());
 }
 
-TEST(QuadLayout, BearMapsCleanlyOnceRefined)
+TEST(QuadLayout, BearMeetsTheStretchTargetsOnceRefinedAndNearFoldsMended)
 {
   // The default pipeline of `diffuv param`: the layout refined by the judge,
-  // then mapped with the fold repair. On the bear (a closed scan with legs
-  // and ears) the raw map needs almost no repair and is close to isometric.
+  // then mapped with the repair. On the bear (a closed scan with legs and
+  // ears) the raw map needs almost no repair and is close to isometric once
+  // the near-folds are mended: issue #18's targets (L2 <= 1.25, area <= 1.5,
+  // angle <= 1.7, at most 1 % of the vertices moved; measured 1.15, 1.23,
+  // 1.57, 0.6 %). Without the near-fold pass, one 17-face quad with a
+  // triangle almost flat in uv had L2 51 and the whole atlas 1.81.
   const Mesh& bear = cgal_mesh("bear.off");
   const diffuv::Raw_map_judge<Mesh, decltype(bear.points())> judge(bear, bear.points());
   Seg seg;
   diffuv::Patching_report report;
   ASSERT_TRUE(diffuv::disc_patches(bear, {}, bear.points(), seg, diffuv::Patching_options(), &report, judge).ok());
   EXPECT_GT(report.layout.refined_cells, 0u);
-  diffuv::Uv_atlas<Mesh> atlas(bear);
-  const auto results = diffuv::parameterize_patches(bear, seg, bear.points(), atlas);
-  diffuv::Distortion_summary total;
-  std::size_t moved = 0;
-  for(const auto& r : results) {
-    ASSERT_TRUE(r.status.ok()) << r.status.what();
-    moved += r.repair.moved_vertices;
-    total = diffuv::combined(total, diffuv::measure_distortion(bear, atlas.chart(r.chart).faces, bear.points(),
-                                                               atlas.chart_texture_map(r.chart)));
-  }
+  auto atlas_of = [&](const diffuv::Repair_options& repair, std::size_t& moved) {
+    diffuv::Uv_atlas<Mesh> atlas(bear);
+    const auto results = diffuv::parameterize_patches(bear, seg, bear.points(), atlas, diffuv::Default_distance_tag(),
+                                                      diffuv::Fibonacci_heap_tag(), repair);
+    diffuv::Distortion_summary total;
+    moved = 0;
+    for(const auto& r : results) {
+      EXPECT_TRUE(r.status.ok()) << r.status.what();
+      if(!r.status.ok()) continue;
+      moved += r.repair.moved_vertices + r.repair.moved_border_vertices;
+      total = diffuv::combined(total, diffuv::measure_distortion(bear, atlas.chart(r.chart).faces, bear.points(),
+                                                                 atlas.chart_texture_map(r.chart)));
+    }
+    return total;
+  };
+  std::size_t moved = 0, moved_folds_only = 0;
+  const diffuv::Distortion_summary total = atlas_of(diffuv::Repair_options(), moved);
+  diffuv::Repair_options folds_only;
+  folds_only.max_angle_distortion = 0;
+  const diffuv::Distortion_summary without = atlas_of(folds_only, moved_folds_only);
   EXPECT_TRUE(total.injective());
+  EXPECT_TRUE(without.injective());
   EXPECT_LE(moved, num_vertices(bear) / 100);
-  // L2 is an area-weighted mean of squares: one small bad quad dominates it
-  // (measured 1.81, of which one 17-face quad with L2 51; 1.15-1.18 with other
-  // seeds: doc/layout.md), so the bound is loose.
-  EXPECT_LT(total.stretch_l2, 2.0);
-  EXPECT_LT(total.area_mean, 1.35);
-  EXPECT_LT(total.angle_mean, 1.7);
+  EXPECT_LT(moved_folds_only, moved);
+  EXPECT_LE(total.stretch_l2, 1.25);
+  EXPECT_LE(total.area_mean, 1.5);
+  EXPECT_LE(total.angle_mean, 1.7);
+  EXPECT_GT(without.stretch_l2, 1.5);
+  EXPECT_GT(without.angle_mean, total.angle_mean);
 }
 
 TEST(QuadLayout, EveryChartOfTheDefaultAtlasIsOneToOne)

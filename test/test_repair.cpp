@@ -77,6 +77,57 @@ TEST(Repair, AFoldInAFlatGridIsRepairedExactlyAndOnlyThere)
   }
 }
 
+double worst_angle(const Mesh& m, const std::vector<Point_2>& uv)
+{
+  std::vector<diffuv::Triangle_distortion> per_face;
+  diffuv::measure_distortion(m, faces(m), m.points(), boost::make_iterator_property_map(uv.begin(), get(boost::vertex_index, m)),
+                             &per_face);
+  double worst = 0;
+  for(const auto& d : per_face) worst = std::max(worst, d.angle);
+  return worst;
+}
+
+TEST(Repair, ANearFoldIsReSolvedLikeAFold)
+{
+  // One interior vertex pushed to 1 % of a grid step from its lower
+  // neighbour: no triangle flips, but the two between them are almost flat
+  // (the near-folds that gave bear's 17-face quad L2 51).
+  const std::size_t n = 20;
+  const Mesh grid = make_grid(n, n);
+  const auto sides = grid_sides(grid, n);
+  std::vector<Point_2> uv = grid_uv(grid);
+  uv[grid_vertex(n, 5, 5)] = Point_2(0.25, 0.2 + 0.0005);
+  ASSERT_EQ(measure(grid, uv).flipped, 0u);
+  ASSERT_EQ(measure(grid, uv).degenerate, 0u);
+  ASSERT_GT(worst_angle(grid, uv), 50.);
+  const std::vector<Point_2> pushed = uv;
+
+  // Off: the map is kept as it is.
+  diffuv::Repair_options off;
+  off.max_angle_distortion = 0;
+  diffuv::Repair_report report;
+  ASSERT_TRUE(diffuv::repair_folds(grid, grid.points(), sides, boost::make_iterator_property_map(uv.begin(), get(boost::vertex_index, grid)), &report, off).ok());
+  EXPECT_EQ(uv, pushed);
+  EXPECT_EQ(report.thin_faces, 0u);
+  EXPECT_EQ(report.moved_vertices, 0u);
+
+  // On (the default): re-solved around the vertex only, and on a flat grid
+  // the mean value solve gives the grid back (linear precision).
+  ASSERT_TRUE(diffuv::repair_folds(grid, grid.points(), sides, boost::make_iterator_property_map(uv.begin(), get(boost::vertex_index, grid)), &report).ok());
+  EXPECT_EQ(report.folded_faces, 0u);
+  EXPECT_GT(report.thin_faces, 0u);
+  EXPECT_EQ(report.remaining_thin_faces, 0u);
+  EXPECT_GE(report.moved_vertices, 1u);
+  EXPECT_LT(report.moved_vertices, 30u);
+  EXPECT_TRUE(measure(grid, uv).injective());
+  EXPECT_LT(worst_angle(grid, uv), 1.5);
+  const std::vector<Point_2> expected = grid_uv(grid);
+  for(vertex_descriptor v : vertices(grid)) {
+    EXPECT_NEAR(uv[v].x(), expected[v].x(), 1e-9) << v;
+    EXPECT_NEAR(uv[v].y(), expected[v].y(), 1e-9) << v;
+  }
+}
+
 TEST(Repair, ValidRegionsAreKeptBitForBit)
 {
   // A non-linear but valid map (u^2 along x) with one fold far from the

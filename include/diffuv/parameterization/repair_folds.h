@@ -16,6 +16,14 @@
 //     are flat in any map onto the square, and so are the triangles around a
 //     group of interior vertices whose border neighbours all lie on one side;
 //     they are "forced" and reported.
+// Then the near-folds: a triangle that the map bends far more than any
+// shape needs (sigma_max / sigma_min of its Jacobian on the chart's rectangle
+// above `max_angle_distortion`) is one step from a fold: a vertex almost on
+// the line of its opposite edge, or two border vertices squeezed together
+// on a side. Squeezed sides are re-spaced by arc length and the interior
+// around the bent triangles is re-solved the same way, each round kept only
+// if it folds nothing and bends the triangles it changed less. On bear, one
+// 17-face quad had L2 stretch 51 from one such triangle (doc/layout.md).
 #ifndef DIFFUV_PARAMETERIZATION_REPAIR_FOLDS_H
 #define DIFFUV_PARAMETERIZATION_REPAIR_FOLDS_H
 
@@ -35,7 +43,9 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace diffuv {
@@ -45,6 +55,11 @@ struct Repair_options {
   bool enabled = true;            ///< false keeps the raw diffusion coordinates (the paper's method)
   std::size_t initial_rings = 1;  ///< rings of vertices added around the first folds
   std::size_t max_local_rounds = 6;  ///< local re-solves (rings doubling) before the whole patch is re-solved
+  /// A triangle bent by more than this (sigma_max / sigma_min of the map on the
+  /// chart's rectangle, 1 = shape kept) is re-solved like a fold if that helps
+  /// (doc/quality.md); 0 turns the near-fold pass off.
+  double max_angle_distortion = 20;
+  std::size_t max_thin_rounds = 3;  ///< near-fold re-solves (rings doubling)
 };
 
 /// What `repair_folds()` did to one patch (all zero when the repair is off).
@@ -52,10 +67,12 @@ struct Repair_report {
   std::size_t folded_faces = 0;        ///< faces flipped or degenerate, or around a vertex the map winds around twice, before the repair (forced ones excluded)
   std::size_t forced_degenerate = 0;   ///< faces with all three vertices on one side, or around interior vertices whose border neighbours all are: flat in any map onto the square
   std::size_t moved_vertices = 0;      ///< interior vertices whose (u,v) changed
-  std::size_t moved_border_vertices = 0;  ///< border vertices re-spaced because their side was not monotone
+  std::size_t moved_border_vertices = 0;  ///< border vertices re-spaced because their side was not monotone, or was squeezed at a near-fold
   std::size_t rounds = 0;              ///< linear solves
   bool whole_patch = false;            ///< whether the last resort (every interior vertex re-solved) was needed
   std::size_t remaining_folded_faces = 0;  ///< folds left (0 unless the last resort met a numerical limit)
+  std::size_t thin_faces = 0;          ///< faces bent beyond `max_angle_distortion` once the folds were repaired (forced ones excluded)
+  std::size_t remaining_thin_faces = 0;  ///< of those, the ones the near-fold pass left bent beyond it
 };
 
 namespace internal {
@@ -219,9 +236,17 @@ Status repair_folds(const TriangleMesh& tm, VertexPointMap vpm,
 
   // Walking counter-clockwise, v1 has u increasing, u2 v increasing, v2 u
   // decreasing, u1 v decreasing: each side runs once along its edge of the square.
-  struct Walk { const std::vector<vertex_descriptor>* side; bool along_u; bool increasing; };
-  const std::array<Walk, 4> walks = {Walk{&sides.v1, true, true}, Walk{&sides.u2, false, true},
-                                     Walk{&sides.v2, true, false}, Walk{&sides.u1, false, false}};
+  struct Walk { const std::vector<vertex_descriptor>* side; bool along_u; bool increasing; std::uint8_t bit; };
+  const std::array<Walk, 4> walks = {Walk{&sides.v1, true, true, 4}, Walk{&sides.u2, false, true, 2},
+                                     Walk{&sides.v2, true, false, 8}, Walk{&sides.u1, false, false, 1}};
+  auto side_arc_lengths = [&](const Walk& w) {
+    const auto& side = *w.side;
+    std::vector<double> arc(side.size(), 0.);
+    for(std::size_t k = 1; k < side.size(); ++k)
+      arc[k] = arc[k - 1] + std::sqrt(CGAL::to_double(CGAL::squared_distance(xyz[get(index, side[k - 1])],
+                                                                              xyz[get(index, side[k])])));
+    return arc;
+  };
   auto monotone = [&](const Walk& w) {
     const std::vector<double>& c = w.along_u ? u : v;
     for(std::size_t k = 1; k < w.side->size(); ++k) {
@@ -234,24 +259,58 @@ Status repair_folds(const TriangleMesh& tm, VertexPointMap vpm,
   // The common case costs two linear passes: no local defect and monotone
   // sides prove the map one-to-one, no overlap test needed.
   const bool border_ok = std::all_of(walks.begin(), walks.end(), monotone);
+  // How much the map bends each triangle's shape on the chart's rectangle
+  // (sigma_max / sigma_min of its Jacobian; 0 for a triangle degenerate in 3D).
+  const std::array<double, 2> rectangle = chart_size(sides, vpm);
+  auto bend = [&](const std::array<std::size_t, 3>& t) {
+    const auto e1 = xyz[t[1]] - xyz[t[0]], e2 = xyz[t[2]] - xyz[t[0]];
+    const double l1 = std::sqrt(CGAL::to_double(e1 * e1));
+    const double x2 = l1 > 0 ? CGAL::to_double(e1 * e2) / l1 : 0.;
+    const double y2_squared = CGAL::to_double(e2 * e2) - x2 * x2;
+    if(!(l1 > 0 && y2_squared > 0)) return 0.;
+    const double y2 = std::sqrt(y2_squared);
+    // The triangle in a frame of its plane is [[l1, x2], [0, y2]]; J maps it onto its (u,v) edges.
+    const double du1 = (u[t[1]] - u[t[0]]) * rectangle[0], du2 = (u[t[2]] - u[t[0]]) * rectangle[0];
+    const double dv1 = (v[t[1]] - v[t[0]]) * rectangle[1], dv2 = (v[t[2]] - v[t[0]]) * rectangle[1];
+    const auto [s_max, s_min] =
+        internal::singular_values_2x2(du1 / l1, (du2 - du1 * x2 / l1) / y2, dv1 / l1, (dv2 - dv1 * x2 / l1) / y2);
+    return s_min > 0 ? s_max / s_min : std::numeric_limits<double>::infinity();
+  };
+  // The triangles bent beyond the threshold (forced ones aside: flat in any
+  // map), and the worst bend.
+  std::vector<bool> thin(p.triangle.size());
+  auto find_thin = [&]() {
+    std::size_t count = 0;
+    double worst = 0;
+    for(std::size_t f = 0; f < p.triangle.size(); ++f) {
+      const auto& t = p.triangle[f];
+      thin[f] = false;
+      if(p.forced[f]) continue;
+      const double b = bend(t);
+      worst = std::max(worst, b);
+      thin[f] = b > options.max_angle_distortion;
+      count += thin[f];
+    }
+    return std::make_pair(count, worst);
+  };
+  const bool near_folds = options.max_angle_distortion > 0;
+
   r.folded_faces = find_defects();
-  if(r.folded_faces == 0 && border_ok) return Status();
+  if(r.folded_faces == 0 && border_ok && !(near_folds && find_thin().first > 0)) return Status();
 
   // 1. A side that does not run monotonically is re-spaced by arc length.
-  for(const Walk& w : walks) {
-    if(monotone(w)) continue;
+  auto respace = [&](const Walk& w) {
     const auto& side = *w.side;
     std::vector<double>& c = w.along_u ? u : v;
-    std::vector<double> arc(side.size(), 0.);
-    for(std::size_t k = 1; k < side.size(); ++k)
-      arc[k] = arc[k - 1] + std::sqrt(CGAL::to_double(CGAL::squared_distance(xyz[get(index, side[k - 1])],
-                                                                              xyz[get(index, side[k])])));
+    const std::vector<double> arc = side_arc_lengths(w);
     const double total = arc.back();
     for(std::size_t k = 1; k + 1 < side.size(); ++k) {
       const double t = total > 0 ? arc[k] / total : double(k) / double(side.size() - 1);
       c[get(index, side[k])] = w.increasing ? t : 1. - t;
     }
-  }
+  };
+  for(const Walk& w : walks)
+    if(!monotone(w)) respace(w);
 
   // Vertex adjacency for growing regions.
   p.ring.resize(n);
@@ -386,6 +445,96 @@ Status repair_folds(const TriangleMesh& tm, VertexPointMap vpm,
     if(solve(interior)) defects = find_defects();
   }
   r.remaining_folded_faces = defects;
+
+  // 4. Near-folds, once the map is one-to-one. A side along which a bent
+  //    triangle's edge is squeezed to under a quarter of the side's mean
+  //    spacing (the distance to the next side grows slowly along a side that
+  //    meets it at a flat corner: cow's small quads) is re-spaced by arc
+  //    length; the interior vertices of the bent triangles and next to the
+  //    re-spaced sides, grown by rings doubling, are re-solved. A round is
+  //    kept only if it folds nothing and lowers the worst bend among the
+  //    triangles it changed.
+  if(defects == 0 && near_folds) {
+    std::size_t count = find_thin().first;
+    r.thin_faces = count;
+    std::vector<bool> near(n, false);
+    auto add_near = [&](std::size_t i, std::vector<std::size_t>& to) {
+      if(p.side_mask[i] || near[i]) return;
+      near[i] = true;
+      to.push_back(i);
+    };
+    std::array<bool, 4> respaced{};
+    std::size_t near_rings = 1;
+    for(std::size_t round = 0; count > 0 && round < options.max_thin_rounds; ++round, near_rings *= 2) {
+      std::vector<double> u_kept = u, v_kept = v;
+      const std::vector<bool> near_kept = near;
+      const std::array<bool, 4> respaced_kept = respaced;
+      std::vector<std::size_t> front;
+      for(std::size_t k = 0; k < 4; ++k) {
+        const Walk& w = walks[k];
+        if(respaced[k]) continue;
+        const std::vector<double>& c = w.along_u ? u : v;
+        const double length = side_arc_lengths(w).back();
+        const double span = w.along_u ? rectangle[0] : rectangle[1];
+        bool squeezed = false;
+        for(std::size_t f = 0; f < p.triangle.size() && !squeezed; ++f) {
+          if(!thin[f]) continue;
+          const auto& t = p.triangle[f];
+          for(int e = 0; e < 3 && !squeezed; ++e) {
+            const std::size_t a = t[e], b = t[(e + 1) % 3];
+            if(!(p.side_mask[a] & p.side_mask[b] & w.bit)) continue;
+            const double along = std::sqrt(CGAL::to_double(CGAL::squared_distance(xyz[a], xyz[b])));
+            squeezed = length > 0 && std::abs(c[a] - c[b]) * span < 0.25 * along * span / length;
+          }
+        }
+        if(!squeezed) continue;
+        respace(w);
+        respaced[k] = true;
+        for(vertex_descriptor vd : *w.side)
+          for(std::size_t j : p.ring[get(index, vd)]) add_near(j, front);
+      }
+      for(std::size_t f = 0; f < p.triangle.size(); ++f)
+        if(thin[f])
+          for(std::size_t i : p.triangle[f]) add_near(i, front);
+      for(std::size_t step = 0; step < near_rings; ++step) {
+        std::vector<std::size_t> next;
+        for(std::size_t i : front)
+          for(std::size_t j : p.ring[i]) add_near(j, next);
+        front.swap(next);
+      }
+      bool better = solve(near) && find_defects() == 0 && std::all_of(walks.begin(), walks.end(), monotone);
+      if(better) {
+        // The worst bend among the triangles this round changed, before and after.
+        std::vector<std::size_t> changed;
+        for(std::size_t f = 0; f < p.triangle.size(); ++f) {
+          const auto& t = p.triangle[f];
+          if(!p.forced[f] && std::any_of(t.begin(), t.end(), [&](std::size_t i) { return u[i] != u_kept[i] || v[i] != v_kept[i]; }))
+            changed.push_back(f);
+        }
+        auto worst_changed = [&]() {
+          double b = 0;
+          for(std::size_t f : changed) b = std::max(b, bend(p.triangle[f]));
+          return b;
+        };
+        const double after = worst_changed();
+        std::swap(u, u_kept);
+        std::swap(v, v_kept);
+        const double before = worst_changed();
+        std::swap(u, u_kept);
+        std::swap(v, v_kept);
+        better = after < before;
+        if(better) count = find_thin().first;
+      }
+      if(!better) {
+        u = u_kept;
+        v = v_kept;
+        near = near_kept;
+        respaced = respaced_kept;
+        break;
+      }
+    }
+    r.remaining_thin_faces = count;
+  }
   write_back();
   if(r.remaining_folded_faces > 0)
     return Status(Status_code::not_injective, std::to_string(r.remaining_folded_faces) + " folded faces remain");

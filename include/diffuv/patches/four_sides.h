@@ -324,9 +324,13 @@ std::size_t separate_flat_triangles(const FaceGraph& g,
     return count;
   };
 
-  std::vector<double> at(n + 1, 0.);  // arc length at each loop position
-  for(std::size_t i = 0; i < n; ++i) at[i + 1] = at[i] + edge_lengths[i];
-  auto arc = [&](std::size_t a, std::size_t b) { return b >= a ? at[b] - at[a] : at[n] - at[a] + at[b]; };
+  // Arc length from position a forwards to b, summed from a: the same sum
+  // wherever the loop starts (a prefix sum would round differently).
+  auto arc = [&](std::size_t a, std::size_t b) {
+    double sum = 0;
+    for(std::size_t i = a; i != b; i = (i + 1) % n) sum += edge_lengths[i];
+    return sum;
+  };
   const std::array<std::size_t, 4> start = corners;
   std::size_t moves = 0;
   std::size_t flat = count_flat(corners);
