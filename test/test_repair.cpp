@@ -117,8 +117,44 @@ TEST(Repair, ANearFoldIsReSolvedLikeAFold)
   EXPECT_EQ(report.folded_faces, 0u);
   EXPECT_GT(report.thin_faces, 0u);
   EXPECT_EQ(report.remaining_thin_faces, 0u);
+  EXPECT_EQ(report.moved_border_vertices, 0u);  // no side is squeezed
   EXPECT_GE(report.moved_vertices, 1u);
   EXPECT_LT(report.moved_vertices, 30u);
+  EXPECT_TRUE(measure(grid, uv).injective());
+  EXPECT_LT(worst_angle(grid, uv), 1.5);
+  const std::vector<Point_2> expected = grid_uv(grid);
+  for(vertex_descriptor v : vertices(grid)) {
+    EXPECT_NEAR(uv[v].x(), expected[v].x(), 1e-9) << v;
+    EXPECT_NEAR(uv[v].y(), expected[v].y(), 1e-9) << v;
+  }
+}
+
+TEST(Repair, ASqueezedSideIsReSpacedByArcLength)
+{
+  // Two neighbours on the bottom side (v1) pushed together in u, still in
+  // order: the side stays monotone and nothing folds, but the triangle over
+  // their edge is almost flat. Re-spacing v1 by arc length and re-solving
+  // next to it gives the grid back (on a flat grid, arc length is i / n).
+  const std::size_t n = 20;
+  const Mesh grid = make_grid(n, n);
+  const auto sides = grid_sides(grid, n);
+  std::vector<Point_2> uv = grid_uv(grid);
+  uv[grid_vertex(n, 6, 0)] = Point_2(0.25 + 0.0005, 0.);
+  ASSERT_EQ(measure(grid, uv).flipped, 0u);
+  ASSERT_GT(worst_angle(grid, uv), 50.);
+  diffuv::Repair_report report;
+  ASSERT_TRUE(diffuv::repair_folds(grid, grid.points(), sides, boost::make_iterator_property_map(uv.begin(), get(boost::vertex_index, grid)), &report).ok());
+  EXPECT_EQ(report.folded_faces, 0u);
+  EXPECT_GT(report.thin_faces, 0u);
+  EXPECT_EQ(report.remaining_thin_faces, 0u);
+  // Only side v1 was re-spaced: its vertices may move (by rounding, all but
+  // the pushed one), every other border vertex keeps its uv bit for bit.
+  EXPECT_GE(report.moved_border_vertices, 1u);
+  EXPECT_LE(report.moved_border_vertices, n - 1);
+  const std::vector<Point_2> grid_before = grid_uv(grid);
+  for(std::size_t k = 0; k <= n; ++k)
+    for(const vertex_descriptor v : {grid_vertex(n, 0, k), grid_vertex(n, n, k), grid_vertex(n, k, n)})
+      EXPECT_EQ(uv[v], grid_before[v]) << v;
   EXPECT_TRUE(measure(grid, uv).injective());
   EXPECT_LT(worst_angle(grid, uv), 1.5);
   const std::vector<Point_2> expected = grid_uv(grid);

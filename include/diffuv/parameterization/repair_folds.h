@@ -400,39 +400,51 @@ Status repair_folds(const TriangleMesh& tm, VertexPointMap vpm,
     return true;
   };
 
+  // Marks in `into` the interior vertices within `steps` edges of `seeds`
+  // (a border seed reaches out through its neighbours, other border vertices
+  // stop the search) and returns how many `into` holds. A new search each
+  // time, so that a region whose defects lie inside it still grows.
+  auto grow = [&](const std::vector<std::size_t>& seeds, std::size_t steps, std::vector<bool>& into) {
+    std::vector<bool> reached(n, false);
+    std::vector<std::size_t> front;
+    for(std::size_t i : seeds)
+      if(!reached[i]) {
+        reached[i] = true;
+        front.push_back(i);
+      }
+    for(std::size_t step = 0; step < steps && !front.empty(); ++step) {
+      std::vector<std::size_t> next;
+      for(std::size_t i : front)
+        for(std::size_t j : p.ring[i])
+          if(!reached[j]) {
+            reached[j] = true;
+            if(!p.side_mask[j]) next.push_back(j);
+          }
+      front.swap(next);
+    }
+    std::size_t size = 0;
+    for(std::size_t i = 0; i < n; ++i) {
+      if(reached[i] && !p.side_mask[i]) into[i] = true;
+      size += into[i];
+    }
+    return size;
+  };
+
   // 2. Local re-solves around the defects, rings doubling; the region only
   //    grows, and stops growing locally at a third of the patch.
   std::vector<bool> region(n, false);
-  std::size_t region_size = 0;
   std::size_t rings = std::max<std::size_t>(options.initial_rings, 1);
   std::size_t defects = find_defects();
-  auto add = [&](std::size_t i, std::vector<std::size_t>& to) {
-    if(p.side_mask[i] || region[i]) return;
-    region[i] = true;
-    ++region_size;
-    to.push_back(i);
-  };
   // Folds over a tenth of the patch are not local: go straight to step 3.
   const std::size_t local_rounds = 10 * defects > p.triangle.size() ? 0 : options.max_local_rounds;
   for(std::size_t round = 0; defects > 0 && round < local_rounds; ++round, rings *= 2) {
-    std::vector<std::size_t> front;
+    std::vector<std::size_t> seeds;
     for(std::size_t i = 0; i < n; ++i)
-      if(bad_vertex[i]) {
-        add(i, front);
-        for(std::size_t j : p.ring[i]) add(j, front);  // a border vertex grows from its neighbours
-      }
+      if(bad_vertex[i]) seeds.push_back(i);
     for(std::size_t f = 0; f < p.triangle.size(); ++f)
-      if(bad_face[f])
-        for(std::size_t i : p.triangle[f]) {
-          add(i, front);
-          for(std::size_t j : p.ring[i]) add(j, front);  // a defect on the border grows from its neighbours
-        }
-    for(std::size_t step = 0; step < rings; ++step) {
-      std::vector<std::size_t> next;
-      for(std::size_t i : front)
-        for(std::size_t j : p.ring[i]) add(j, next);
-      front.swap(next);
-    }
+      if(bad_face[f]) seeds.insert(seeds.end(), p.triangle[f].begin(), p.triangle[f].end());
+    // The defects' own ring, then `rings` more.
+    const std::size_t region_size = grow(seeds, rings + 1, region);
     if(3 * region_size > n || !solve(region)) break;
     defects = find_defects();
   }
@@ -447,35 +459,29 @@ Status repair_folds(const TriangleMesh& tm, VertexPointMap vpm,
   r.remaining_folded_faces = defects;
 
   // 4. Near-folds, once the map is one-to-one. A side along which a bent
-  //    triangle's edge is squeezed to under a quarter of the side's mean
-  //    spacing (the distance to the next side grows slowly along a side that
-  //    meets it at a flat corner: cow's small quads) is re-spaced by arc
-  //    length; the interior vertices of the bent triangles and next to the
-  //    re-spaced sides, grown by rings doubling, are re-solved. A round is
-  //    kept only if it folds nothing and lowers the worst bend among the
-  //    triangles it changed.
+  //    triangle's edge is squeezed to under a quarter of its share of the
+  //    side's arc length (the distance to the next side grows slowly along a
+  //    side that meets it at a flat corner: cow's small quads) is re-spaced
+  //    by arc length; the interior vertices around the bent triangles and
+  //    next to re-spaced sides, 1, 2, 4 rings deep, are re-solved. A round is
+  //    kept only if it folds nothing, keeps the sides monotone, and lowers
+  //    the worst bend among the triangles it may change by over 0.1 %.
   if(defects == 0 && near_folds) {
     std::size_t count = find_thin().first;
     r.thin_faces = count;
     std::vector<bool> near(n, false);
-    auto add_near = [&](std::size_t i, std::vector<std::size_t>& to) {
-      if(p.side_mask[i] || near[i]) return;
-      near[i] = true;
-      to.push_back(i);
-    };
     std::array<bool, 4> respaced{};
     std::size_t near_rings = 1;
     for(std::size_t round = 0; count > 0 && round < options.max_thin_rounds; ++round, near_rings *= 2) {
       std::vector<double> u_kept = u, v_kept = v;
       const std::vector<bool> near_kept = near;
       const std::array<bool, 4> respaced_kept = respaced;
-      std::vector<std::size_t> front;
+      std::vector<std::size_t> seeds;
       for(std::size_t k = 0; k < 4; ++k) {
         const Walk& w = walks[k];
         if(respaced[k]) continue;
         const std::vector<double>& c = w.along_u ? u : v;
         const double length = side_arc_lengths(w).back();
-        const double span = w.along_u ? rectangle[0] : rectangle[1];
         bool squeezed = false;
         for(std::size_t f = 0; f < p.triangle.size() && !squeezed; ++f) {
           if(!thin[f]) continue;
@@ -484,31 +490,30 @@ Status repair_folds(const TriangleMesh& tm, VertexPointMap vpm,
             const std::size_t a = t[e], b = t[(e + 1) % 3];
             if(!(p.side_mask[a] & p.side_mask[b] & w.bit)) continue;
             const double along = std::sqrt(CGAL::to_double(CGAL::squared_distance(xyz[a], xyz[b])));
-            squeezed = length > 0 && std::abs(c[a] - c[b]) * span < 0.25 * along * span / length;
+            squeezed = length > 0 && std::abs(c[a] - c[b]) < 0.25 * along / length;
           }
         }
         if(!squeezed) continue;
         respace(w);
         respaced[k] = true;
-        for(vertex_descriptor vd : *w.side)
-          for(std::size_t j : p.ring[get(index, vd)]) add_near(j, front);
+        for(vertex_descriptor vd : *w.side) seeds.push_back(get(index, vd));
       }
       for(std::size_t f = 0; f < p.triangle.size(); ++f)
-        if(thin[f])
-          for(std::size_t i : p.triangle[f]) add_near(i, front);
-      for(std::size_t step = 0; step < near_rings; ++step) {
-        std::vector<std::size_t> next;
-        for(std::size_t i : front)
-          for(std::size_t j : p.ring[i]) add_near(j, next);
-        front.swap(next);
-      }
+        if(thin[f]) seeds.insert(seeds.end(), p.triangle[f].begin(), p.triangle[f].end());
+      grow(seeds, near_rings, near);
       bool better = solve(near) && find_defects() == 0 && std::all_of(walks.begin(), walks.end(), monotone);
       if(better) {
-        // The worst bend among the triangles this round changed, before and after.
+        // The triangles this round may change (a re-solved vertex or one on a
+        // re-spaced side: decided by the region, not by rounding), before and after.
+        std::vector<bool> may_change(n);
+        for(std::size_t i = 0; i < n; ++i) may_change[i] = near[i];
+        for(std::size_t k = 0; k < 4; ++k)
+          if(respaced[k])
+            for(vertex_descriptor vd : *walks[k].side) may_change[get(index, vd)] = true;
         std::vector<std::size_t> changed;
         for(std::size_t f = 0; f < p.triangle.size(); ++f) {
           const auto& t = p.triangle[f];
-          if(!p.forced[f] && std::any_of(t.begin(), t.end(), [&](std::size_t i) { return u[i] != u_kept[i] || v[i] != v_kept[i]; }))
+          if(!p.forced[f] && std::any_of(t.begin(), t.end(), [&](std::size_t i) { return may_change[i]; }))
             changed.push_back(f);
         }
         auto worst_changed = [&]() {
@@ -522,7 +527,7 @@ Status repair_folds(const TriangleMesh& tm, VertexPointMap vpm,
         const double before = worst_changed();
         std::swap(u, u_kept);
         std::swap(v, v_kept);
-        better = after < before;
+        better = after < 0.999 * before;
         if(better) count = find_thin().first;
       }
       if(!better) {
