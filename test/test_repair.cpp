@@ -41,6 +41,16 @@ std::vector<Point_2> grid_uv(const Mesh& grid)
   return uv;
 }
 
+// Every vertex back at its place on the grid, up to rounding.
+void expect_grid_back(const Mesh& grid, const std::vector<Point_2>& uv)
+{
+  const std::vector<Point_2> expected = grid_uv(grid);
+  for(vertex_descriptor v : vertices(grid)) {
+    EXPECT_NEAR(uv[v].x(), expected[v].x(), 1e-9) << v;
+    EXPECT_NEAR(uv[v].y(), expected[v].y(), 1e-9) << v;
+  }
+}
+
 diffuv::Distortion_summary measure(const Mesh& m, const std::vector<Point_2>& uv)
 {
   return diffuv::measure_distortion(m, faces(m), m.points(),
@@ -70,11 +80,7 @@ TEST(Repair, AFoldInAFlatGridIsRepairedExactlyAndOnlyThere)
   // Local: a few rings around the fold, not the grid's 19 x 19 interior vertices.
   EXPECT_GE(report.moved_vertices, 1u);
   EXPECT_LT(report.moved_vertices, 60u);
-  const std::vector<Point_2> expected = grid_uv(grid);
-  for(vertex_descriptor v : vertices(grid)) {
-    EXPECT_NEAR(uv[v].x(), expected[v].x(), 1e-9) << v;
-    EXPECT_NEAR(uv[v].y(), expected[v].y(), 1e-9) << v;
-  }
+  expect_grid_back(grid, uv);
 }
 
 double worst_angle(const Mesh& m, const std::vector<Point_2>& uv)
@@ -122,11 +128,7 @@ TEST(Repair, ANearFoldIsReSolvedLikeAFold)
   EXPECT_LT(report.moved_vertices, 30u);
   EXPECT_TRUE(measure(grid, uv).injective());
   EXPECT_LT(worst_angle(grid, uv), 1.5);
-  const std::vector<Point_2> expected = grid_uv(grid);
-  for(vertex_descriptor v : vertices(grid)) {
-    EXPECT_NEAR(uv[v].x(), expected[v].x(), 1e-9) << v;
-    EXPECT_NEAR(uv[v].y(), expected[v].y(), 1e-9) << v;
-  }
+  expect_grid_back(grid, uv);
 }
 
 TEST(Repair, ASqueezedSideIsReSpacedByArcLength)
@@ -157,11 +159,7 @@ TEST(Repair, ASqueezedSideIsReSpacedByArcLength)
       EXPECT_EQ(uv[v], grid_before[v]) << v;
   EXPECT_TRUE(measure(grid, uv).injective());
   EXPECT_LT(worst_angle(grid, uv), 1.5);
-  const std::vector<Point_2> expected = grid_uv(grid);
-  for(vertex_descriptor v : vertices(grid)) {
-    EXPECT_NEAR(uv[v].x(), expected[v].x(), 1e-9) << v;
-    EXPECT_NEAR(uv[v].y(), expected[v].y(), 1e-9) << v;
-  }
+  expect_grid_back(grid, uv);
 }
 
 TEST(Repair, ValidRegionsAreKeptBitForBit)
