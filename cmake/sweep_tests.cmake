@@ -18,8 +18,8 @@ set(diffuv_sweep_not_injective
   blobby_3cc.off           # a whole disc component with more ears than corners, no neighbour to take one
   boeing.off               # CAD strips: fallback patches with more ears than corners
   cheese.off               # the same, around its holes
-  elephant-with-holes.off  # the same, around its holes
-  lion.off                 # a fallback patch with more ears than corners, its ears next to quads (no hand-off there)
+  couplingdown.off         # CAD strips: two fallback patches of 11 and 13 runs with no interior path between junctions, one flat face each that no hand-off takes (one-to-one before the cuts between junctions)
+  elephant-with-holes.off  # as cheese: strips around its holes
   mech-holes-shark.off     # CAD strips around holes
 )
 foreach(mesh IN LISTS diffuv_sweep_meshes)

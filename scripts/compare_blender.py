@@ -6,8 +6,11 @@ Runs `diffuv param` (default settings) and, when Blender is installed
 OBJ files are measured by `diffuv measure` (diffuv's own measure_distortion(),
 chart by chart, means weighted by 3D area). Prints a Markdown table.
 
-usage: scripts/compare_blender.py [--build BUILD] [--runs N] [--out DIR] [MESH ...]
+usage: scripts/compare_blender.py [--build BUILD] [--runs N] [--out DIR] [--bands AXIS:N] [MESH ...]
 MESH: a path, or a name of CGAL's data set (build/data/meshes/NAME.off).
+--bands AXIS:N labels each mesh in N height bands along AXIS
+(scripts/height_labels.py) and runs `diffuv param --labels` on them: the
+layout inside painted regions (e.g. --bands y:4 cow, --bands z:6 man).
 """
 import argparse
 import os
@@ -35,10 +38,18 @@ def measure(diffuv, obj):
     return dict(zip(keys, [float(v) for v in values]))
 
 
-def diffuv_run(diffuv, mesh, out, runs):
+def diffuv_run(diffuv, mesh, out, runs, bands=None):
+    command = [diffuv, "param", mesh, "-o", out]
+    if bands:
+        axis, count = bands.split(":")
+        os.makedirs(out, exist_ok=True)
+        labels = os.path.join(out, "bands.txt")
+        with open(labels, "w") as f:
+            f.write(run([sys.executable, os.path.join(HERE, "height_labels.py"), mesh, axis, count]))
+        command += ["--labels", labels]
     times = []
     for _ in range(runs):
-        text = run([diffuv, "param", mesh, "-o", out])
+        text = run(command)
         stages = re.search(r"stages: (.*)", text).group(1)
         parsed = {}
         for name, value, unit in re.findall(r"(\w+) ([0-9.]+) (ms|s)", stages):
@@ -70,6 +81,7 @@ def main():
     parser.add_argument("--build", default=os.path.join(HERE, "..", "build"))
     parser.add_argument("--runs", type=int, default=3)
     parser.add_argument("--out", default="compare-out")
+    parser.add_argument("--bands", help="AXIS:N, e.g. y:4: label the meshes in N height bands first")
     args = parser.parse_args()
     diffuv = os.path.join(args.build, "src", "diffuv")
     if not os.path.exists(diffuv):
@@ -82,7 +94,7 @@ def main():
         mesh = name if os.path.exists(name) else os.path.join(args.build, "data", "meshes", name + ".off")
         stem = os.path.splitext(os.path.basename(mesh))[0]
         out = os.path.join(args.out, stem)
-        d = diffuv_run(diffuv, mesh, out, args.runs)
+        d = diffuv_run(diffuv, mesh, out, args.runs, args.bands)
         b = None
         if blender:
             # Blender reads OBJ: diffuv's own output has the same vertices in the same order.

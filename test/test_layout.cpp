@@ -114,6 +114,17 @@ double height(const Mesh& m, face_descriptor f, int axis)
   return sum / 3;
 }
 
+// Labels of m's faces by the height of their centroid along `axis`: `bands`
+// bands of equal height, 0 at the bottom (scripts/height_labels.py).
+std::vector<int> height_bands(const Mesh& m, int axis, int bands)
+{
+  double low = 1e300, high = -1e300;
+  for(auto v : vertices(m)) { low = std::min(low, m.point(v)[axis]); high = std::max(high, m.point(v)[axis]); }
+  std::vector<int> labels(num_faces(m));
+  for(auto f : faces(m)) labels[f.idx()] = std::min(bands - 1, static_cast<int>(bands * (height(m, f, axis) - low) / (high - low)));
+  return labels;
+}
+
 } // namespace
 
 TEST(QuadLayout, CowIsAConformingLayoutOfQuads)
@@ -171,10 +182,7 @@ TEST(QuadLayout, LabelledRegionsAreSplitWithinTheirBorders)
   // each band is split into quads that keep to it, numbered as its parts,
   // and the layout is conforming across the bands' borders too.
   const Mesh& cow = cgal_mesh("cow.off");
-  double low = 1e300, high = -1e300;
-  for(auto v : vertices(cow)) { low = std::min(low, cow.point(v).y()); high = std::max(high, cow.point(v).y()); }
-  std::vector<int> labels(num_faces(cow));
-  for(auto f : faces(cow)) labels[f.idx()] = std::min(3, static_cast<int>(4 * (height(cow, f, 1) - low) / (high - low)));
+  std::vector<int> labels = height_bands(cow, 1, 4);
   // Slivers of a band with fewer than four border vertices join a neighbour
   // first (documented in disc_patches()); the bands are what is left.
   Seg bands = diffuv::patches_from_labels(cow, labels, cow.points());
@@ -197,6 +205,46 @@ TEST(QuadLayout, LabelledRegionsAreSplitWithinTheirBorders)
   // a band's border may not collapse, so the bands' small cells keep 5-8
   // arcs and have no room for that many cuts; they become fallback patches.
   EXPECT_GE(3 * c.quads, seg.number_of_patches());
+}
+
+TEST(QuadLayout, FallbackPatchesNeedingMoreThanFourCornersAreCut)
+{
+  // Cow in four height bands: the bands' jagged borders leave fallback
+  // patches with more junctions and ear tips than four corners, where some
+  // face stays flat whatever the corners. Cut between junctions, fewer do.
+  const Mesh& cow = cgal_mesh("cow.off");
+  const std::vector<int> labels = height_bands(cow, 1, 4);
+  struct Count { std::size_t patches = 0, flat = 0, fallbacks = 0; };
+  auto laid_out = [&](bool cut) {
+    diffuv::Patching_options options;
+    options.hand_off_flat_faces = false;  // the faces left flat by the corners alone
+    options.quads.split_at_junctions = cut;
+    Seg seg;
+    diffuv::Patching_report report;
+    EXPECT_TRUE(diffuv::disc_patches(cow, labels, cow.points(), seg, options, &report).ok());
+    if(cut) EXPECT_GT(report.layout.split_fallbacks, 0u);
+    else EXPECT_EQ(report.layout.split_fallbacks, 0u);
+    Count count;
+    count.patches = seg.number_of_patches();
+    for(std::size_t p = 0; p < seg.number_of_patches(); ++p) {
+      for(auto f : seg.patch_faces[p]) EXPECT_EQ(labels[f.idx()], seg.patch_label[p]) << "patch " << p << " crosses a band";
+      if(seg.corners(p)) continue;
+      ++count.fallbacks;
+      diffuv::Four_sides<vertex_descriptor> sides;
+      EXPECT_TRUE(diffuv::region_sides(cow, seg, p, cow.points(), sides).ok());
+      count.flat += diffuv::flat_faces(cow, seg, p, sides).size();
+    }
+    // Still conforming: a cut ends where a neighbour's run ends.
+    const Layout_check c = check_layout(cow, seg);
+    EXPECT_EQ(c.not_discs, 0u);
+    EXPECT_EQ(c.t_junctions, 0u);
+    return count;
+  };
+  const Count whole = laid_out(false), cut = laid_out(true);
+  EXPECT_GT(whole.flat, 0u);
+  EXPECT_LT(cut.flat, whole.flat);
+  EXPECT_GT(cut.fallbacks, whole.fallbacks);
+  EXPECT_GT(cut.patches, whole.patches);
 }
 
 TEST(QuadLayout, ALayoutReadBackIsKeptWhole)

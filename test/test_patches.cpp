@@ -8,12 +8,14 @@
 #include <diffuv/patches/flat_faces.h>
 #include <diffuv/graph/patch_graph.h>
 #include <diffuv/patches/region_sides.h>
+#include <diffuv/patches/split_patches.h>
 
 #include <CGAL/boost/graph/Face_filtered_graph.h>
 
 #include <boost/graph/dijkstra_shortest_paths.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <memory>
 #include <numeric>
@@ -305,6 +307,97 @@ TEST(Patches, CapsAreSplitInTwo)
   diffuv::Uv_atlas<Mesh> atlas(disc);
   ASSERT_TRUE(diffuv::parameterize_disc(disc, {}, atlas, &by_disc).ok());
   EXPECT_EQ(by_region.corners, by_disc.corners);
+}
+
+// Runs of neighbours (junctions) along the one boundary loop of patch p.
+std::size_t runs_of(const Mesh& m, const Seg& seg, std::size_t p)
+{
+  const auto loops = diffuv::patch_loops(m, seg, p, m.points());
+  EXPECT_EQ(loops.size(), 1u);
+  const auto& nb = loops.front().neighbour;
+  std::size_t runs = 0;
+  for(std::size_t i = 0; i < nb.size(); ++i) runs += nb[(i + nb.size() - 1) % nb.size()] != nb[i];
+  return runs;
+}
+
+// The corners patch p needs: its junctions, and the tips of its ears (boundary
+// vertices in one face of p), which are flat unless a corner is there.
+std::size_t needed_corners(const Mesh& m, const Seg& seg, std::size_t p)
+{
+  const auto loop = diffuv::patch_loops(m, seg, p, m.points()).front();
+  const std::size_t n = loop.vertices.size();
+  std::size_t needed = 0;
+  for(std::size_t i = 0; i < n; ++i) {
+    std::size_t in_p = 0;
+    for(auto f : CGAL::faces_around_target(m.halfedge(loop.vertices[i]), m))
+      in_p += f != Mesh::null_face() && seg.face_patch[f.idx()] == p;
+    needed += loop.neighbour[(i + n - 1) % n] != loop.neighbour[i] || in_p == 1;
+  }
+  return needed;
+}
+
+TEST(Patches, APatchNeedingManyCornersIsCutBetweenJunctions)
+{
+  // A 12x12 grid: a central 6x6 block (label 0) inside a ring cut into k
+  // wedges by angle around the centre, so the block has k runs of neighbours
+  // (and ears at the two corners where the grid's diagonals leave one face).
+  const std::size_t n = 12;
+  const Mesh grid = make_grid(n, n);
+  for(std::size_t k : {3u, 5u, 6u, 8u, 10u}) {
+    SCOPED_TRACE("k = " + std::to_string(k));
+    std::vector<int> labels(num_faces(grid));
+    for(auto f : faces(grid)) {
+      const Point_3 c = face_centroid(grid, f);
+      const double x = c.x() - 0.5, y = c.y() - 0.5;
+      if(std::abs(x) < 0.25 && std::abs(y) < 0.25) { labels[f.idx()] = 0; continue; }
+      const double turn = (std::atan2(y, x) + CGAL_PI) / (2 * CGAL_PI);  // in [0, 1]
+      labels[f.idx()] = 1 + std::min<int>(int(k) - 1, int(turn * double(k)));
+    }
+    Seg seg = diffuv::patches_from_labels(grid, labels, grid.points());
+    ASSERT_EQ(seg.patch_label.front(), 0);
+    ASSERT_EQ(runs_of(grid, seg, 0), k);
+    const std::size_t needed = needed_corners(grid, seg, 0);
+    ASSERT_GE(needed, k);
+    ASSERT_GT(needed, 4u);
+    std::vector<std::size_t> wedge_runs;
+    for(std::size_t p = 1; p < seg.number_of_patches(); ++p) wedge_runs.push_back(runs_of(grid, seg, p));
+    const std::set<face_descriptor> block(seg.patch_faces[0].begin(), seg.patch_faces[0].end());
+
+    // Cuts of any length here (the default refuses cuts longer than half the
+    // arc they cut off, which most cuts across this square are).
+    const double any_length = std::numeric_limits<double>::infinity();
+    Seg unchanged = seg;
+    EXPECT_EQ(diffuv::split_at_junctions(grid, unchanged, 0, grid.points(), 0.01), 1u);
+    EXPECT_EQ(unchanged.face_patch, seg.face_patch);
+    const std::size_t pieces = diffuv::split_at_junctions(grid, seg, 0, grid.points(), any_length);
+    // Each cut makes its two ends corners of both pieces; every piece ends
+    // with three or four, so the fewest pieces are ceil((needed - 2) / 2).
+    EXPECT_EQ(pieces, needed <= 4 ? 1u : (needed - 1) / 2);
+    ASSERT_EQ(seg.number_of_patches(), pieces + k);
+    std::set<face_descriptor> covered;
+    std::size_t all_needed = 0;
+    for(std::size_t p = 0; p < pieces; ++p) {
+      EXPECT_EQ(seg.patch_label[p], 0);
+      EXPECT_TRUE(diffuv::check_patch_disc(grid, seg, p).ok()) << "piece " << p;
+      const std::size_t c = needed_corners(grid, seg, p);
+      if(pieces > 1) EXPECT_GE(c, 3u) << "piece " << p;
+      EXPECT_LE(c, 4u) << "piece " << p;
+      all_needed += c;
+      covered.insert(seg.patch_faces[p].begin(), seg.patch_faces[p].end());
+      // Its corners are its junctions: no run is merged into another.
+      diffuv::Four_sides<vertex_descriptor> sides;
+      diffuv::Side_report report;
+      ASSERT_TRUE(diffuv::region_sides(grid, seg, p, grid.points(), sides, &report).ok());
+      EXPECT_EQ(report.merged, 0u);
+    }
+    EXPECT_EQ(covered, block);
+    EXPECT_EQ(all_needed, needed + 2 * (pieces - 1));
+    // No wedge gains a junction: the cuts end where its run ends.
+    for(std::size_t p = pieces; p < seg.number_of_patches(); ++p)
+      EXPECT_EQ(runs_of(grid, seg, p), wedge_runs[p - pieces]) << "wedge " << seg.patch_label[p];
+    // A piece that needs four corners or fewer is left as it is.
+    EXPECT_EQ(diffuv::split_at_junctions(grid, seg, 0, grid.points(), any_length), 1u);
+  }
 }
 
 // Every vertex of a closed mesh gets a (patch, u, v) with u, v in [0,1].

@@ -29,6 +29,7 @@
 #include <diffuv/patches/fan_split.h>
 #include <diffuv/patches/four_sides.h>
 #include <diffuv/patches/segmentation.h>
+#include <diffuv/patches/split_patches.h>
 #include <diffuv/patches/voronoi_cells.h>
 
 #include <CGAL/boost/graph/iterator.h>
@@ -79,6 +80,12 @@ struct Quad_layout_options {
   /// finger tip, a horn): it is framed by a ring of wall quads around an inner
   /// quad instead of being cut through one centre. 0 turns framing off.
   double frame_depth = 1.0;
+  /// Cut fallback patches that need more than four corners (junctions, ear
+  /// tips) between two junctions until no piece does (`split_at_junctions()`).
+  bool split_at_junctions = true;
+  /// ... with no cut longer than this times the boundary arc it cuts off
+  /// (longer cuts made slivers: doc/layout.md).
+  double max_cut_ratio = 0.5;
 };
 
 /// What the four-sided layout did.
@@ -94,6 +101,7 @@ struct Quad_layout_report {
   std::size_t rounds = 0;            ///< refinement rounds run
   std::size_t refined_cells = 0;     ///< seeds added by the refinement
   std::size_t framed_cells = 0;      ///< deep cells split into walls and a tip (extremities)
+  std::size_t split_fallbacks = 0;   ///< fallback patches with more than four runs cut between junctions (`split_at_junctions()`)
 };
 
 namespace internal {
@@ -848,6 +856,22 @@ Status quads_from_cells(const TriangleMesh& tm, const Segmentation<TriangleMesh>
   }
   r.quads -= invalid;
   r.fallback_patches += invalid;
+  // A fallback patch that needs more corners than four (junctions, ear tips)
+  // is cut between junctions, so that each piece can have them all.
+  if(options.split_at_junctions)
+    for(std::size_t p = 0; p < sorted.number_of_patches(); ++p) {
+      if(sorted.corners(p)) continue;
+      const std::size_t pieces = split_at_junctions(tm, sorted, p, vpm, options.max_cut_ratio);
+      if(pieces > 1) {
+        ++r.split_fallbacks;
+        r.fallback_patches += pieces - 1;
+        p += pieces - 1;
+      }
+    }
+  for(std::size_t p = 0; p < sorted.number_of_patches(); ++p) {
+    sorted.patch_label[p] = static_cast<int>(p);
+    sorted.patch_part[p] = 0;
+  }
   quads = std::move(sorted);
   return Status();
 }
