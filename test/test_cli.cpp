@@ -38,8 +38,22 @@ std::string slurp(const fs::path& p)
   return ss.str();
 }
 
+#ifndef DIFFUV_TOOL_PATH
+// Built without the tool (DIFFUV_BUILD_TOOL=OFF, as scripts/sanitize.sh does):
+// these tests are skipped there and run in the normal build.
+#define DIFFUV_TOOL_PATH ""
+#define DIFFUV_NO_TOOL 1
+#endif
+
 class Tool : public diffuv_test::Temp_dir_test {
 protected:
+  void SetUp() override
+  {
+    Temp_dir_test::SetUp();
+#ifdef DIFFUV_NO_TOOL
+    GTEST_SKIP() << "built without the diffuv tool (DIFFUV_BUILD_TOOL=OFF)";
+#endif
+  }
   Tool_run run(const std::string& args)
   {
     const std::string cmd = std::string(DIFFUV_TOOL_PATH) + " " + args + " >" + (dir_ / "stdout").string() + " 2>" +
