@@ -211,40 +211,53 @@ TEST(QuadLayout, FallbackPatchesNeedingMoreThanFourCornersAreCut)
 {
   // Cow in four height bands: the bands' jagged borders leave fallback
   // patches with more junctions and ear tips than four corners, where some
-  // face stays flat whatever the corners. Cut between junctions, fewer do.
+  // face stays flat whatever the corners. Cut between junctions, fewer do,
+  // the layout stays conforming, and a shuffled copy is cut the same way.
   const Mesh& cow = cgal_mesh("cow.off");
   const std::vector<int> labels = height_bands(cow, 1, 4);
-  struct Count { std::size_t patches = 0, flat = 0, fallbacks = 0; };
-  auto laid_out = [&](bool cut) {
+  struct Laid { Seg seg; std::size_t flat = 0, fallbacks = 0, split = 0; };
+  auto laid_out = [](const Mesh& m, const std::vector<int>& face_labels, bool cut) {
     diffuv::Patching_options options;
     options.hand_off_flat_faces = false;  // the faces left flat by the corners alone
     options.quads.split_at_junctions = cut;
-    Seg seg;
+    Laid laid;
     diffuv::Patching_report report;
-    EXPECT_TRUE(diffuv::disc_patches(cow, labels, cow.points(), seg, options, &report).ok());
-    if(cut) EXPECT_GT(report.layout.split_fallbacks, 0u);
-    else EXPECT_EQ(report.layout.split_fallbacks, 0u);
-    Count count;
-    count.patches = seg.number_of_patches();
+    EXPECT_TRUE(diffuv::disc_patches(m, face_labels, m.points(), laid.seg, options, &report).ok());
+    laid.split = report.layout.split_fallbacks;
+    const Seg& seg = laid.seg;
     for(std::size_t p = 0; p < seg.number_of_patches(); ++p) {
-      for(auto f : seg.patch_faces[p]) EXPECT_EQ(labels[f.idx()], seg.patch_label[p]) << "patch " << p << " crosses a band";
+      for(auto f : seg.patch_faces[p]) EXPECT_EQ(face_labels[f.idx()], seg.patch_label[p]) << "patch " << p << " crosses a band";
       if(seg.corners(p)) continue;
-      ++count.fallbacks;
+      ++laid.fallbacks;
       diffuv::Four_sides<vertex_descriptor> sides;
-      EXPECT_TRUE(diffuv::region_sides(cow, seg, p, cow.points(), sides).ok());
-      count.flat += diffuv::flat_faces(cow, seg, p, sides).size();
+      EXPECT_TRUE(diffuv::region_sides(m, seg, p, m.points(), sides).ok());
+      laid.flat += diffuv::flat_faces(m, seg, p, sides).size();
     }
     // Still conforming: a cut ends where a neighbour's run ends.
-    const Layout_check c = check_layout(cow, seg);
+    const Layout_check c = check_layout(m, seg);
     EXPECT_EQ(c.not_discs, 0u);
     EXPECT_EQ(c.t_junctions, 0u);
-    return count;
+    return laid;
   };
-  const Count whole = laid_out(false), cut = laid_out(true);
+  const Laid whole = laid_out(cow, labels, false), cut = laid_out(cow, labels, true);
+  EXPECT_EQ(whole.split, 0u);
+  EXPECT_GT(cut.split, 0u);
   EXPECT_GT(whole.flat, 0u);
   EXPECT_LT(cut.flat, whole.flat);
-  EXPECT_GT(cut.fallbacks, whole.fallbacks);
-  EXPECT_GT(cut.patches, whole.patches);
+  EXPECT_GE(cut.fallbacks, whole.fallbacks + cut.split);
+
+  const Shuffled s = shuffled_copy(cow, 11);
+  std::vector<int> shuffled_labels(labels.size());
+  for(std::size_t k = 0; k < s.fperm.size(); ++k) shuffled_labels[k] = labels[s.fperm[k]];
+  const Laid again = laid_out(s.mesh, shuffled_labels, true);
+  EXPECT_EQ(again.split, cut.split);
+  ASSERT_EQ(again.seg.number_of_patches(), cut.seg.number_of_patches());
+  for(std::size_t p = 0; p < cut.seg.number_of_patches(); ++p) {
+    std::set<std::size_t> faces_a, faces_b;
+    for(auto f : cut.seg.patch_faces[p]) faces_a.insert(f.idx());
+    for(auto f : again.seg.patch_faces[p]) faces_b.insert(s.fperm[f.idx()]);
+    EXPECT_EQ(faces_a, faces_b) << "patch " << p;
+  }
 }
 
 TEST(QuadLayout, ALayoutReadBackIsKeptWhole)

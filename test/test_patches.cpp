@@ -372,7 +372,7 @@ TEST(Patches, APatchNeedingManyCornersIsCutBetweenJunctions)
     const std::size_t pieces = diffuv::split_at_junctions(grid, seg, 0, grid.points(), any_length);
     // Each cut makes its two ends corners of both pieces; every piece ends
     // with three or four, so the fewest pieces are ceil((needed - 2) / 2).
-    EXPECT_EQ(pieces, needed <= 4 ? 1u : (needed - 1) / 2);
+    EXPECT_EQ(pieces, (needed - 1) / 2);
     ASSERT_EQ(seg.number_of_patches(), pieces + k);
     std::set<face_descriptor> covered;
     std::size_t all_needed = 0;
@@ -380,7 +380,7 @@ TEST(Patches, APatchNeedingManyCornersIsCutBetweenJunctions)
       EXPECT_EQ(seg.patch_label[p], 0);
       EXPECT_TRUE(diffuv::check_patch_disc(grid, seg, p).ok()) << "piece " << p;
       const std::size_t c = needed_corners(grid, seg, p);
-      if(pieces > 1) EXPECT_GE(c, 3u) << "piece " << p;
+      EXPECT_GE(c, 3u) << "piece " << p;
       EXPECT_LE(c, 4u) << "piece " << p;
       all_needed += c;
       covered.insert(seg.patch_faces[p].begin(), seg.patch_faces[p].end());
@@ -396,7 +396,11 @@ TEST(Patches, APatchNeedingManyCornersIsCutBetweenJunctions)
     for(std::size_t p = pieces; p < seg.number_of_patches(); ++p)
       EXPECT_EQ(runs_of(grid, seg, p), wedge_runs[p - pieces]) << "wedge " << seg.patch_label[p];
     // A piece that needs four corners or fewer is left as it is.
-    EXPECT_EQ(diffuv::split_at_junctions(grid, seg, 0, grid.points(), any_length), 1u);
+    for(std::size_t p = 0; p < pieces; ++p) {
+      const Seg before = seg;
+      EXPECT_EQ(diffuv::split_at_junctions(grid, seg, p, grid.points(), any_length), 1u) << "piece " << p;
+      EXPECT_EQ(seg.face_patch, before.face_patch);
+    }
   }
 }
 

@@ -101,7 +101,7 @@ struct Quad_layout_report {
   std::size_t rounds = 0;            ///< refinement rounds run
   std::size_t refined_cells = 0;     ///< seeds added by the refinement
   std::size_t framed_cells = 0;      ///< deep cells split into walls and a tip (extremities)
-  std::size_t split_fallbacks = 0;   ///< fallback patches with more than four runs cut between junctions (`split_at_junctions()`)
+  std::size_t split_fallbacks = 0;   ///< fallback patches needing more than four corners (junctions, ear tips) cut between junctions (`split_at_junctions()`)
 };
 
 namespace internal {

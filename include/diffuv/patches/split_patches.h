@@ -19,8 +19,10 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <memory>
 #include <queue>
 #include <set>
+#include <tuple>
 #include <unordered_map>
 #include <vector>
 
@@ -71,6 +73,29 @@ face_centroid(const TriangleMesh& tm, typename boost::graph_traits<TriangleMesh>
 {
   const auto h = halfedge(f, tm);
   return CGAL::centroid(get(vpm, source(h, tm)), get(vpm, target(h, tm)), get(vpm, target(next(h, tm), tm)));
+}
+
+// The corners patch p needs, as positions of its boundary `loop` in order:
+// its junctions (where the neighbour changes) and its ear tips (boundary
+// vertices in one face of p); `is_junction` says which.
+template <class TriangleMesh>
+void needed_corners(const TriangleMesh& tm, const Segmentation<TriangleMesh>& seg, std::size_t p,
+                    const Patch_loop<TriangleMesh>& loop, std::vector<std::size_t>& needed, std::vector<char>& is_junction)
+{
+  auto findex = get(boost::face_index, tm);
+  const std::size_t n = loop.vertices.size();
+  needed.clear();
+  is_junction.clear();
+  for(std::size_t i = 0; i < n; ++i) {
+    const bool junction = loop.neighbour[(i + n - 1) % n] != loop.neighbour[i];
+    std::size_t faces_here = 0;
+    for(auto h : CGAL::halfedges_around_target(halfedge(loop.vertices[i], tm), tm))
+      if(!is_border(h, tm) && seg.face_patch[get(findex, face(h, tm))] == p) ++faces_here;
+    if(junction || faces_here == 1) {
+      needed.push_back(i);
+      is_junction.push_back(junction);
+    }
+  }
 }
 
 } // namespace internal
@@ -200,13 +225,17 @@ bool split_cap(const TriangleMesh& tm, Segmentation<TriangleMesh>& seg, std::siz
 /// those that leave both pieces at most four corners, then those that leave
 /// one piece four; among those the path shortest relative to the shorter of
 /// the two boundary arcs it cuts off, so pieces are compact; ties go to the
-/// lower loop position. A cut longer than `max_cut_ratio` times that arc is
-/// not made (it would leave a sliver along its path). A cut must give two
-/// discs with four boundary vertices each. Pieces are cut again while they
-/// need more than four corners and a cut exists.
+/// ends' points. A cut longer than `max_cut_ratio` times that arc is not made
+/// (it would leave a sliver along its path). A cut must give two discs with
+/// four boundary vertices each, and one whose path leaves a piece an ear tip
+/// (more corners than counted) is taken only if no other is left. Pieces are
+/// cut again while they need more than four corners and a cut exists.
+/// Every choice is made on points and lengths, so the pieces do not depend
+/// on vertex or face order.
 ///
-/// \returns the number of pieces (1: nothing was cut); they replace `p`
-///          (`Segmentation::split()`, parts 1, 2, ...; no chosen corners)
+/// \returns the number of pieces (1: nothing was cut); they replace `p`, in
+///          place, with no chosen corners and the parts `Segmentation::split()`
+///          gives (1, 2 for one cut; a piece cut again gets 11, 12, ...)
 template <class TriangleMesh, class VertexPointMap>
 std::size_t split_at_junctions(const TriangleMesh& tm, Segmentation<TriangleMesh>& seg, std::size_t p, VertexPointMap vpm,
                                double max_cut_ratio = 0.5)
@@ -219,43 +248,38 @@ std::size_t split_at_junctions(const TriangleMesh& tm, Segmentation<TriangleMesh
   if(loops.size() != 1) return 1;
   const auto& loop = loops.front();
   const std::size_t n = loop.vertices.size();
-  // The corners the patch needs, as loop positions in order, and whether each is a junction.
-  std::vector<std::size_t> needed;
+  std::vector<std::size_t> needed;  // loop positions, in order
   std::vector<char> is_junction;
-  for(std::size_t i = 0; i < n; ++i) {
-    const bool junction = loop.neighbour[(i + n - 1) % n] != loop.neighbour[i];
-    std::size_t faces_here = 0;
-    for(auto h : CGAL::halfedges_around_target(halfedge(loop.vertices[i], tm), tm))
-      if(!is_border(h, tm) && seg.face_patch[get(findex, face(h, tm))] == p) ++faces_here;
-    if(junction || faces_here == 1) {
-      needed.push_back(i);
-      is_junction.push_back(junction);
-    }
-  }
+  internal::needed_corners(tm, seg, p, loop, needed, is_junction);
   const std::size_t k = needed.size();
   if(k <= 4) return 1;
 
-  // The patch's vertices, numbered locally; edges of its faces with their lengths.
+  // The patch's vertices, numbered locally in the order of their points, and
+  // the edges of its faces in that order: ties between paths of equal length
+  // then break the same way whatever the mesh's vertex and face order.
   auto vindex = get(boost::vertex_index, tm);
   auto eindex = get(boost::edge_index, tm);
-  std::unordered_map<std::size_t, std::size_t> local;
   std::vector<vertex_descriptor> vertex_of;
-  auto local_of = [&](vertex_descriptor v) {
-    const auto it = local.emplace(static_cast<std::size_t>(get(vindex, v)), vertex_of.size());
-    if(it.second) vertex_of.push_back(v);
-    return it.first->second;
-  };
+  for(face_descriptor f : seg.patch_faces[p])
+    for(vertex_descriptor v : CGAL::vertices_around_face(halfedge(f, tm), tm)) vertex_of.push_back(v);
+  std::sort(vertex_of.begin(), vertex_of.end(), [&](vertex_descriptor a, vertex_descriptor b) {
+    return get(vpm, a) != get(vpm, b) ? get(vpm, a) < get(vpm, b) : get(vindex, a) < get(vindex, b);
+  });
+  vertex_of.erase(std::unique(vertex_of.begin(), vertex_of.end()), vertex_of.end());
+  std::unordered_map<std::size_t, std::size_t> local;
+  for(std::size_t i = 0; i < vertex_of.size(); ++i) local.emplace(static_cast<std::size_t>(get(vindex, vertex_of[i])), i);
+  auto local_of = [&](vertex_descriptor v) { return local.at(static_cast<std::size_t>(get(vindex, v))); };
   struct Step { std::size_t to; double length; std::size_t edge; };
-  std::vector<std::vector<Step>> steps;
+  std::vector<std::vector<Step>> steps(vertex_of.size());
   for(face_descriptor f : seg.patch_faces[p])
     for(auto h : CGAL::halfedges_around_face(halfedge(f, tm), tm)) {
       const std::size_t a = local_of(source(h, tm)), b = local_of(target(h, tm));
-      if(steps.size() < vertex_of.size()) steps.resize(vertex_of.size());
       const double length = std::sqrt(CGAL::to_double(CGAL::squared_distance(get(vpm, source(h, tm)), get(vpm, target(h, tm)))));
       const std::size_t e = static_cast<std::size_t>(get(eindex, edge(h, tm)));
       steps[a].push_back({b, length, e});
       steps[b].push_back({a, length, e});
     }
+  for(auto& out : steps) std::sort(out.begin(), out.end(), [](const Step& x, const Step& y) { return x.to < y.to; });
   std::vector<char> on_loop(vertex_of.size(), 0);
   for(vertex_descriptor v : loop.vertices) on_loop[local_of(v)] = 1;
 
@@ -286,28 +310,38 @@ std::size_t split_at_junctions(const TriangleMesh& tm, Segmentation<TriangleMesh
   for(std::size_t i = 0; i < k; ++i)
     if(is_junction[i]) from_needed[i] = paths_from(local_of(loop.vertices[needed[i]]));
 
-  std::vector<double> at(n + 1, 0.);  // arc length at each loop position
-  for(std::size_t i = 0; i < n; ++i) at[i + 1] = at[i] + loop.length[i];
-  auto arc = [&](std::size_t a, std::size_t b) { return b > a ? at[b] - at[a] : at[n] - at[a] + at[b]; };
+  // Arc lengths summed from their first vertex, so that they do not depend on where the loop starts.
+  auto arc = [&](std::size_t a, std::size_t b) {
+    double length = 0.;
+    for(std::size_t i = a; i != b; i = (i + 1) % n) length += loop.length[i];
+    return length;
+  };
   // A cut between needed corners i and i + m leaves m + 1 and k - m + 1 to the pieces.
-  struct Cut { int fit; double score; std::size_t i, m; };
+  struct Cut { int fit; double score; std::size_t i, m, lower, upper; };  // lower, upper: local indices of its ends
   std::vector<Cut> cuts;
   for(std::size_t i = 0; i < k; ++i)
     for(std::size_t m = 2; m + 2 <= k; ++m) {
       const std::size_t j = (i + m) % k;
       if(!is_junction[i] || !is_junction[j] || j < i) continue;  // each pair once
-      const double length = from_needed[i].distance[local_of(loop.vertices[needed[j]])];
+      const std::size_t a = local_of(loop.vertices[needed[i]]), b = local_of(loop.vertices[needed[j]]);
+      const double length = from_needed[i].distance[b];
       if(!std::isfinite(length)) continue;
       const std::size_t larger = std::max(m + 1, k - m + 1), smaller = std::min(m + 1, k - m + 1);
       const int fit = larger <= 4 ? 0 : (smaller == 4 ? 1 : 2);
       const double shorter = std::min(arc(needed[i], needed[j]), arc(needed[j], needed[i]));
       const double score = length / std::max(shorter, 1e-300);
       if(score > max_cut_ratio) continue;  // a piece would be a sliver along the cut
-      cuts.push_back({fit, score, i, m});
+      cuts.push_back({fit, score, i, m, std::min(a, b), std::max(a, b)});
     }
-  std::stable_sort(cuts.begin(), cuts.end(),
-                   [](const Cut& a, const Cut& b) { return a.fit != b.fit ? a.fit < b.fit : a.score < b.score; });
+  // Equal scores (a symmetric patch) by the ends' points, not by loop position.
+  std::sort(cuts.begin(), cuts.end(), [](const Cut& a, const Cut& b) {
+    return std::tie(a.fit, a.score, a.lower, a.upper) < std::tie(b.fit, b.score, b.lower, b.upper);
+  });
 
+  // The first cut whose pieces need no more corners than counted above (a
+  // vertex of the path can be an ear tip of a piece); failing that, the first
+  // that gives two discs.
+  std::unique_ptr<Segmentation<TriangleMesh>> cut_made;
   for(const Cut& c : cuts) {
     const Paths& paths = from_needed[c.i];
     std::set<std::size_t> cut;
@@ -315,30 +349,49 @@ std::size_t split_at_junctions(const TriangleMesh& tm, Segmentation<TriangleMesh
       cut.insert(paths.by_edge[v]);
     auto pieces = internal::components_across(tm, seg.patch_faces[p], cut);
     if(pieces.size() != 2) continue;
-    // The larger piece first (by 3D area; on a tie, the one with the smaller
-    // face centroid), so that the order does not depend on face order.
-    auto key = [&](const std::vector<face_descriptor>& piece) {
+    // The larger piece first (by 3D area; within a relative 1e-9, the one
+    // with the smaller face centroid), so that the order does not depend on
+    // face order.
+    auto area_of = [&](const std::vector<face_descriptor>& piece) {
       double area = 0.;
-      auto lowest = internal::face_centroid(tm, piece.front(), vpm);
-      for(face_descriptor f : piece) {
+      for(face_descriptor f : piece)
         area += CGAL::to_double(CGAL::Polygon_mesh_processing::face_area(f, tm, CGAL::parameters::vertex_point_map(vpm)));
-        lowest = std::min(lowest, internal::face_centroid(tm, f, vpm));
-      }
-      return std::make_pair(-area, lowest);
+      return area;
     };
-    if(key(pieces[1]) < key(pieces[0])) std::swap(pieces[0], pieces[1]);
-    Segmentation<TriangleMesh> trial = seg;
-    trial.split(p, std::move(pieces), findex);
+    auto lowest_centroid = [&](const std::vector<face_descriptor>& piece) {
+      auto lowest = internal::face_centroid(tm, piece.front(), vpm);
+      for(face_descriptor f : piece) lowest = std::min(lowest, internal::face_centroid(tm, f, vpm));
+      return lowest;
+    };
+    const double area0 = area_of(pieces[0]), area1 = area_of(pieces[1]);
+    if(std::abs(area0 - area1) > 1e-9 * std::max(area0, area1) ? area1 > area0
+                                                               : lowest_centroid(pieces[1]) < lowest_centroid(pieces[0]))
+      std::swap(pieces[0], pieces[1]);
+    auto trial = std::make_unique<Segmentation<TriangleMesh>>(seg);
+    trial->split(p, std::move(pieces), findex);
     bool discs = true;
-    for(std::size_t q = p; q < p + 2 && discs; ++q)
-      discs = check_patch_disc(tm, trial, q) && patch_loops(tm, trial, q, vpm).front().vertices.size() >= 4;
+    std::size_t needed_after = 0;  // k + 2 if the path left no ear tip: its ends count twice
+    for(std::size_t q = p; q < p + 2 && discs; ++q) {
+      discs = static_cast<bool>(check_patch_disc(tm, *trial, q));
+      if(!discs) break;
+      const auto piece_loops = patch_loops(tm, *trial, q, vpm);
+      discs = piece_loops.front().vertices.size() >= 4;
+      std::vector<std::size_t> piece_needed;
+      std::vector<char> piece_junction;
+      internal::needed_corners(tm, *trial, q, piece_loops.front(), piece_needed, piece_junction);
+      needed_after += piece_needed.size();
+    }
     if(!discs) continue;
-    seg = std::move(trial);
-    // Each piece again, the later one first so that p's index stays put.
-    const std::size_t second = split_at_junctions(tm, seg, p + 1, vpm, max_cut_ratio);
-    return split_at_junctions(tm, seg, p, vpm, max_cut_ratio) + second;
+    const bool as_counted = needed_after <= k + 2;
+    if(!cut_made) cut_made = std::move(trial);
+    else if(as_counted) cut_made = std::move(trial);
+    if(as_counted) break;
   }
-  return 1;
+  if(!cut_made) return 1;
+  seg = std::move(*cut_made);
+  // Each piece again, the later one first so that p's index stays put.
+  const std::size_t second = split_at_junctions(tm, seg, p + 1, vpm, max_cut_ratio);
+  return split_at_junctions(tm, seg, p, vpm, max_cut_ratio) + second;
 }
 
 /// Cuts non-disc patch `p` into disc pieces with `voronoi_discs()` (parts 1, 2, ...).
