@@ -266,9 +266,15 @@ enum class Fan_failure { none, no_centre, no_cuts, sectors };
 /// (valence at least #targets) near the least-squares centre of the targets
 /// (sum of squared edge-path distances within `centre_tolerance` of the
 /// smallest), the one whose ring best matches the directions of the cuts.
+///
+/// Cuts are traced one after the other, from `first_target` (an index into
+/// `targets`) or, if it is -1, from the target with the smallest id. Local ids
+/// follow the points' coordinates, so a caller who can name a first target by
+/// a rule of its own (`split_regions_into_quads()`: the run of the smallest
+/// neighbour key) makes the split the same on a rotated or scaled copy too.
 template <class TriangleMesh>
 Fan_failure fan_split(const Local_region<TriangleMesh>& r, const std::vector<int>& given_targets, Fan& fan,
-                      double centre_tolerance = 1.5, int forced_centre = -1)
+                      double centre_tolerance = 1.5, int forced_centre = -1, int first_target = -1)
 {
   const std::size_t nv = r.verts.size(), k = given_targets.size();
   fan = Fan();
@@ -276,7 +282,10 @@ Fan_failure fan_split(const Local_region<TriangleMesh>& r, const std::vector<int
   // Cuts are traced one after the other, each avoiding the earlier ones: start
   // from the target with the smallest id so that the order, and so the result,
   // does not depend on where the caller's list starts. `shift` maps back.
-  const std::size_t shift = static_cast<std::size_t>(std::min_element(given_targets.begin(), given_targets.end()) - given_targets.begin());
+  const std::size_t shift =
+      first_target >= 0 && static_cast<std::size_t>(first_target) < k
+          ? static_cast<std::size_t>(first_target)
+          : static_cast<std::size_t>(std::min_element(given_targets.begin(), given_targets.end()) - given_targets.begin());
   std::vector<int> targets(k);
   for(std::size_t a = 0; a < k; ++a) targets[a] = given_targets[(a + shift) % k];
   std::vector<std::vector<double>> target_distance(k);
