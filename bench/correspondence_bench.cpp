@@ -20,12 +20,13 @@
 // true point, over sqrt(area of B). Also measured: the round trip A -> B -> A,
 // the seam continuity (a vertex on a patch border mapped from each of its
 // charts), and the time of the mapping apart from the two parameterizations.
-// B's atlas follows A's corners (`corner_names_by_key()`, as the `correspond`
+// B's atlas follows A's sub-patches and corners (`atlas_to_follow()`, as the `correspond`
 // tool does) unless --no-follow is given.
 //
 // Usage: diffuv_correspondence_bench [--meshes cow,man,elephant,hand]
 //          [--pairs fine,coarse,shuffled,loop,noise] [--runs 3] [--output DIR]
-//          [--distance fmm|graph|exact] [--no-follow] [--self-check]
+//          [--distance fmm|graph|exact] [--no-follow] [--sub-patches]
+//          [--labels quads|voronoi] [--self-check]
 // Writes DIR/table.md, DIR/curves.csv, DIR/correspondence_<mesh>.png and
 // DIR/diagnostics.md (where the errors are); prints the table on stdout and
 // progress on stderr. Exit code: 0 if every pair meets the targets,
@@ -582,17 +583,19 @@ std::string format(const char* f, double x)
 
 enum class Distance { fmm, graph, exact };
 
-using Corner_names_by_key = std::map<diffuv::Patch_key, diffuv::Corner_names>;
 
 // --repair / --no-repair: -1 keeps the library's default (Labelled_atlas_options).
 int repair_choice = -1;
+// --sub-patches: regions with 3 or 5..9 runs are split into four-sided sectors (split_regions_into_quads()).
+bool sub_patches_choice = false;
 
-// `follow`: the corners of another atlas to follow (corner_names_by_key()), or null.
+// `follow`: the sub-patches and corners of another atlas to follow (atlas_to_follow()), or null.
 diffuv::Status build_atlas(const Mesh& m, const std::vector<int>& labels, Labelled& out, Distance distance,
-                           const Corner_names_by_key* follow)
+                           const diffuv::Atlas_to_follow* follow)
 {
   diffuv::Labelled_atlas_options options;
   if(repair_choice >= 0) options.repair.enabled = repair_choice == 1;
+  options.sub_patches = sub_patches_choice;
   switch(distance) {
   case Distance::fmm:
     return diffuv::build_labelled_atlas(m, m.points(), labels, out, options, diffuv::Fmm_distance_tag(), follow);
@@ -606,7 +609,7 @@ diffuv::Status build_atlas(const Mesh& m, const std::vector<int>& labels, Labell
 
 // Builds the labelled atlas `runs` times; returns the last one and the median time.
 std::unique_ptr<Labelled> timed_atlas(const Mesh& m, const std::vector<int>& labels, Distance distance, int runs,
-                                      double& median_ms, const Corner_names_by_key* follow = nullptr)
+                                      double& median_ms, const diffuv::Atlas_to_follow* follow = nullptr)
 {
   std::vector<double> times;
   std::unique_ptr<Labelled> la;
@@ -855,9 +858,9 @@ Pair_result run_pair(Mesh_case& a, const std::string& pair, Distance distance, i
             << format("%.0f", milliseconds_since(t_variant)) << " ms to make)\n";
 
   // B follows A's corners (as the `correspond` tool and the example do) unless told not to.
-  const Corner_names_by_key corners_of_a = diffuv::corner_names_by_key(*a.atlas);
+  const diffuv::Atlas_to_follow follow_a = diffuv::atlas_to_follow(*a.atlas);
   std::unique_ptr<Labelled> atlas_b =
-      timed_atlas(b.mesh, b.labels, distance, runs, r.param_b_ms, follow ? &corners_of_a : nullptr);
+      timed_atlas(b.mesh, b.labels, distance, runs, r.param_b_ms, follow ? &follow_a : nullptr);
   for(const auto& patch : atlas_b->patches) r.followed += patch.side_report.named ? 1 : 0;
   r.param_a_ms = a.param_ms;
 
@@ -1088,12 +1091,15 @@ std::string mesh_name(const std::string& path)
   return std::filesystem::path(path).stem().string();
 }
 
-std::string table(const std::vector<Pair_result>& results, const std::string& distance, int runs, bool follow)
+std::string table(const std::vector<Pair_result>& results, const std::string& distance, int runs, bool follow,
+                  const std::string& labels)
 {
   std::ostringstream out;
   out << "Correspondence accuracy (errors: geodesic distance on B / sqrt(area B); round trip on A / sqrt(area A)); "
       << distance << " distances; "
-      << (follow ? "B's atlas follows A's corners (corner_names_by_key)" : "B's atlas built on its own (--no-follow)")
+      << (follow ? "B's atlas follows A's sub-patches and corners (atlas_to_follow)" : "B's atlas built on its own (--no-follow)")
+      << "; A's regions: " << (labels == "voronoi" ? "diffuv 0.1's Voronoi patches" : "the four-sided layout's patches")
+      << "; sub-patches " << (sub_patches_choice ? "on (--sub-patches)" : "off")
       << "; times in ms, median of " << runs << " run" << (runs > 1 ? "s" : "") << ".\n\n";
   out << "| mesh | pair | A verts | B verts | charts matched | cleaned faces A/B | unmapped | mean | p95 | max | "
          "% <= 0.01 | % <= 0.05 | round trip mean | round trip p95 | seam mean | seam p95 | seam max | t_param A | t_param B | "
@@ -1129,6 +1135,7 @@ struct Options {
   std::string distance = "fmm";
   bool self_check = false;
   bool follow = true;
+  std::string labels = "quads";
 };
 
 int run(const Options& o)
@@ -1149,11 +1156,15 @@ int run(const Options& o)
     a.area = PMP::area(a.mesh);
     a.mean_edge = mean_edge_length(a.mesh);
 
-    // A's labels: automatic disc patches, as `diffuv segment` makes them.
+    // A's labels: automatic disc patches, as `diffuv segment` makes them
+    // (--labels quads), or the Voronoi patches of diffuv 0.1 (--labels
+    // voronoi: regions of three to eight runs, like painted ones).
     const auto t0 = Clock::now();
     diffuv::Segmentation<Mesh> seg;
     diffuv::Patching_report report;
-    diffuv::disc_patches(a.mesh, std::vector<int>{}, a.mesh.points(), seg, diffuv::Patching_options(), &report);
+    diffuv::Patching_options patching;
+    if(o.labels == "voronoi") patching.layout = diffuv::Patch_layout::voronoi;
+    diffuv::disc_patches(a.mesh, std::vector<int>{}, a.mesh.points(), seg, patching, &report);
     a.labels.assign(a.mesh.number_of_faces(), 0);
     for(auto f : a.mesh.faces()) a.labels[f.idx()] = static_cast<int>(seg.face_patch[f.idx()]);
     a.automatic_patches = seg.number_of_patches();
@@ -1196,7 +1207,7 @@ int run(const Options& o)
     std::cerr << "[" << a.name << "] wrote " << png << "\n";
   }
 
-  const std::string md = table(results, o.distance, o.runs, o.follow);
+  const std::string md = table(results, o.distance, o.runs, o.follow, o.labels);
   std::cout << md;
   {
     std::ofstream f(o.output + "/table.md");
@@ -1246,10 +1257,15 @@ int main(int argc, char** argv)
       ->check(CLI::IsMember({"fmm", "graph", "exact"}))
       ->capture_default_str();
   app.add_flag("!--no-follow", o.follow,
-               "Build B's atlas on its own, without following A's corners (corner_names_by_key())");
+               "Build B's atlas on its own, without following A's sub-patches and corners (atlas_to_follow())");
   bool repair = false, no_repair = false;
   auto* repair_flag = app.add_flag("--repair", repair, "Repair the folds of each chart (default: the library's default)");
   app.add_flag("--no-repair", no_repair, "Keep the raw diffusion coordinates")->excludes(repair_flag);
+  app.add_option("--labels", o.labels, "A's regions: the four-sided layout's patches, or diffuv 0.1's Voronoi patches")
+      ->check(CLI::IsMember({"quads", "voronoi"}))
+      ->capture_default_str();
+  app.add_flag("--sub-patches", sub_patches_choice,
+               "Split regions with three or five to nine runs of neighbours into four-sided sectors (split_regions_into_quads())");
   app.add_flag("--self-check", o.self_check,
                "Only check the local exact geodesics against Surface_mesh_shortest_path on the whole of cow.off");
   app.footer("Exit codes: 0 every target met, 1 a target missed (or the self-check failed), 4 error.");

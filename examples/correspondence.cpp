@@ -73,9 +73,9 @@ int main(int argc, char** argv)
     std::cerr << "Error: mesh A: " << status.what() << std::endl;
     return EXIT_FAILURE;
   }
-  const auto corners_of_a = diffuv::corner_names_by_key(atlas_a);
+  const auto follow_a = diffuv::atlas_to_follow(atlas_a);
   status = diffuv::build_labelled_atlas(b, b.points(), labels_b, atlas_b, {}, diffuv::Default_distance_tag(),
-                                        &corners_of_a);
+                                        &follow_a);
   if(!status) {
     std::cerr << "Error: mesh B: " << status.what() << std::endl;
     return EXIT_FAILURE;

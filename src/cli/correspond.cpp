@@ -188,10 +188,11 @@ void run_correspond(const Correspond_options& o)
   });
   const double param_a_ms = ms_since(t);
   t = Clock::now();
-  // B takes its corners at the same junctions of regions as A (by name).
-  const auto corners_of_a = diffuv::corner_names_by_key(atlas_a);
+  // B splits the regions A split, along the same runs, and takes its corners
+  // at the same junctions of regions as A (by name).
+  const auto follow_a = diffuv::atlas_to_follow(atlas_a);
   with_distance(o.distance, [&](auto tag) {
-    return diffuv::build_labelled_atlas(b.mesh, b.mesh.points(), b.face_labels, atlas_b, options, tag, &corners_of_a);
+    return diffuv::build_labelled_atlas(b.mesh, b.mesh.points(), b.face_labels, atlas_b, options, tag, &follow_a);
   });
   const double param_b_ms = ms_since(t);
 

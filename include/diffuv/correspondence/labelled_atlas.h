@@ -16,6 +16,7 @@
 #include <diffuv/parameterization/repair_folds.h>
 #include <diffuv/patches/clean_labels.h>
 #include <diffuv/patches/disc_patches.h>
+#include <diffuv/patches/sub_patches.h>
 
 #include <map>
 #include <stdexcept>
@@ -56,6 +57,15 @@ struct Labelled_atlas_options {
   /// (doc/correspondence.md). Point location stays well defined on a fold (it
   /// picks one sheet by a rule that does not depend on the numbering).
   Repair_options repair{false};
+  /// Split regions with three or five and more runs of neighbours into
+  /// four-sided sectors (`split_regions_into_quads()`): a rule on the
+  /// region's border alone, so both meshes get the same sub-patches. Off by
+  /// default: measured on CGAL's meshes with Voronoi labels, the sectors'
+  /// inner cuts land differently on another tessellation and cost more
+  /// accuracy than the folds they remove (doc/correspondence.md), and a label
+  /// missing in one mesh changes its neighbours' sectors too.
+  bool sub_patches = false;
+  Sub_patch_options sub_patching;
 };
 
 /// A mesh with region labels, cut into disc patches, each patch a chart.
@@ -67,6 +77,10 @@ struct Labelled_atlas {
   Label_cleaning_report cleaning;                     ///< what the cleaning changed
   Segmentation<TriangleMesh> segmentation;            ///< disc patches, each a (label, part)
   Patching_report patching;                           ///< regions cut, caps split
+  Sub_patch_report sub_patching;                      ///< regions split into four-sided sectors
+  /// The runs each split region was cut along, by the region's key before the
+  /// split (`patch_keys()` of the disc patches): what another mesh follows.
+  std::map<std::tuple<int, int, int>, std::vector<Run_key>> split_runs;
   std::vector<Patch_result<TriangleMesh>> patches;    ///< #P entries: each patch's chart (or why it has none)
   Uv_atlas<TriangleMesh> atlas;                       ///< one chart per mapped patch
 
@@ -103,13 +117,33 @@ std::map<Patch_key, Corner_names> corner_names_by_key(const Labelled_atlas<Trian
   return names;
 }
 
+/// What a second mesh's atlas follows of a first one, so that both make the
+/// same choices where their tessellations could tip them apart.
+struct Atlas_to_follow {
+  std::map<Patch_key, Corner_names> corners;             ///< `corner_names_by_key()`
+  std::map<Patch_key, std::vector<Run_key>> split_runs;  ///< `Labelled_atlas::split_runs`
+};
+
+/// The corners and the splits of `atlas`, for `build_labelled_atlas()`'s `follow`.
+template <class TriangleMesh>
+Atlas_to_follow atlas_to_follow(const Labelled_atlas<TriangleMesh>& atlas)
+{
+  return {corner_names_by_key(atlas), atlas.split_runs};
+}
+
 /// Cleans `face_labels`, cuts the regions into disc patches and maps each
 /// patch onto its square (`parameterize_patches()`).
 ///
-/// With `follow` (the `corner_names_by_key()` of another mesh's atlas), a
-/// patch with the same key takes its corners at the same junctions of regions
-/// as there, where they are found (`region_sides()`): two meshes whose labels
-/// differ a little along borders then agree on their corners.
+/// Regions with three or five and more runs of neighbours are split into
+/// four-sided sectors (`split_regions_into_quads()`, `sub_patches`).
+///
+/// With `follow` (`atlas_to_follow()` of another mesh's atlas), a region is
+/// split only if the region with the same key was split there, along the runs
+/// of the same neighbours, and a patch with the same key takes its corners at
+/// the same junctions of regions as there, where they are found
+/// (`region_sides()`): two meshes whose labels differ a little along borders
+/// (where four regions meet at a vertex on one, three and three at two
+/// vertices on the other) then agree on their sub-patches and corners.
 ///
 /// \param face_labels #F entries (by face index); empty means "no labels"
 /// \returns `no_labels` if `face_labels` is empty (a correspondence needs the
@@ -122,7 +156,7 @@ Status build_labelled_atlas(const TriangleMesh& tm, VertexPointMap vpm, std::vec
                             Labelled_atlas<TriangleMesh>& out,
                             const Labelled_atlas_options& options = Labelled_atlas_options(),
                             DistanceTag distance = DistanceTag(),
-                            const std::map<Patch_key, Corner_names>* follow = nullptr)
+                            const Atlas_to_follow* follow = nullptr)
 {
   if(face_labels.empty()) return Status(Status_code::no_labels);
   if(face_labels.size() != num_faces(tm))
@@ -130,11 +164,23 @@ Status build_labelled_atlas(const TriangleMesh& tm, VertexPointMap vpm, std::vec
   if(options.clean) out.cleaning = clean_labels(tm, vpm, face_labels, options.cleaning);
   out.face_labels = face_labels;
   disc_patches(tm, std::move(face_labels), vpm, out.segmentation, options.patching, &out.patching);
+  if(options.sub_patches) {
+    const std::vector<Patch_key> region_keys = patch_keys(out.segmentation);
+    std::vector<std::vector<Run_key>> followed;
+    if(follow)
+      for(const Patch_key& key : region_keys) {
+        const auto it = follow->split_runs.find(key);
+        followed.push_back(it == follow->split_runs.end() ? std::vector<Run_key>() : it->second);
+      }
+    out.sub_patching = split_regions_into_quads(tm, out.segmentation, vpm, options.sub_patching, follow ? &followed : nullptr);
+    for(std::size_t p = 0; p < region_keys.size(); ++p)
+      if(!out.sub_patching.runs[p].empty()) out.split_runs.emplace(region_keys[p], out.sub_patching.runs[p]);
+  }
   std::vector<Corner_names> names;
   if(follow) {
     for(const Patch_key& key : patch_keys(out.segmentation)) {
-      const auto it = follow->find(key);
-      names.push_back(it == follow->end() ? Corner_names() : it->second);
+      const auto it = follow->corners.find(key);
+      names.push_back(it == follow->corners.end() ? Corner_names() : it->second);
     }
   }
   out.patches = parameterize_patches(tm, out.segmentation, vpm, out.atlas, distance, Fibonacci_heap_tag(),
