@@ -219,6 +219,49 @@ TEST(Dijkstra, AddingSourcesOneByOneGivesTheRunOnAllOfThem)
   }
 }
 
+// The layout splits a cap by moving its seed and adding two: move_source()
+// after a run gives the distances of one run on the moved sources (Boost's,
+// the reference), the vertices of the old source's cell take their new
+// nearest source, and a vertex whose origin is the moved source is exactly as
+// far from it as its distance says.
+TEST(Dijkstra, MovingASourceGivesTheRunOnTheMovedSources)
+{
+  const Mesh& mesh = cgal_mesh("man.off");
+  auto lengths = diffuv::edge_length_map(mesh);
+  auto index = get(boost::vertex_index, mesh);
+  std::vector<vertex_descriptor> sources = every_kth_vertex(mesh, 997);
+  ASSERT_GT(sources.size(), 10u);
+  diffuv::Multi_source_dijkstra<Mesh> dijkstra(mesh);
+  std::vector<double> dist(num_vertices(mesh));
+  std::vector<std::size_t> origin(num_vertices(mesh));
+  auto dmap = boost::make_iterator_property_map(dist.begin(), index);
+  auto omap = boost::make_iterator_property_map(origin.begin(), index);
+  ASSERT_TRUE(dijkstra.run(sources, lengths, dmap, omap).ok());
+  // Move source 4 a few times: next door, far away (into another cell), onto
+  // a vertex that is already a source's neighbour.
+  const std::vector<vertex_descriptor> targets = {
+      mesh.target(mesh.halfedge(sources[4])), vertex_descriptor(static_cast<std::uint32_t>(num_vertices(mesh) / 2 + 3)),
+      mesh.target(mesh.halfedge(sources[7]))};
+  for(vertex_descriptor to : targets) {
+    sources[4] = to;
+    ASSERT_TRUE(dijkstra.move_source(4, to, lengths, dmap, omap).ok());
+    const std::vector<double> expected = boost_reference(mesh, lengths, sources);
+    for(auto v : vertices(mesh)) ASSERT_NEAR(dist[v.idx()], expected[v.idx()], 1e-12) << v << " after moving to " << to;
+    EXPECT_EQ(origin[to.idx()], 4u);
+    std::vector<double> from_moved(num_vertices(mesh));
+    ASSERT_TRUE(diffuv::multi_source_dijkstra(mesh, std::vector<vertex_descriptor>{to}, lengths,
+                                              boost::make_iterator_property_map(from_moved.begin(), index))
+                    .ok());
+    std::size_t owned = 0;
+    for(auto v : vertices(mesh))
+      if(origin[v.idx()] == 4) {
+        ++owned;
+        EXPECT_NEAR(from_moved[v.idx()], dist[v.idx()], 1e-12) << v;
+      }
+    EXPECT_GE(owned, 1u);
+  }
+}
+
 TEST(Dijkstra, RestrictedToAPatchOfFaceFilteredGraph)
 {
   // A patch: the faces whose centroid has x below the median. Distances on the

@@ -142,6 +142,45 @@ public:
     return settle(weight, distance, origin);
   }
 
+  /// Moves source `position` of the previous run to vertex `s`: the vertices
+  /// that were nearest the old source are cleared and reached again, from `s`
+  /// and from the vertices around them (with the distances they have); other
+  /// vertices change only where `s` is nearer. The cost is that of the old
+  /// source's cell and of the new one's, not of a whole run. The result is that
+  /// of `run()` with the source moved, except on exact ties between two sources.
+  ///
+  /// \pre `distance` and `origin` hold the result of a run on the same graph
+  template <class WeightMap, class DistanceMap, class OriginMap>
+  Status move_source(std::size_t position, vertex_descriptor s, WeightMap weight, DistanceMap distance, OriginMap origin)
+  {
+    constexpr double infinity = std::numeric_limits<double>::infinity();
+    std::fill(state_.begin(), state_.end(), unseen);
+    heap_.clear();
+    std::vector<vertex_descriptor> cleared;
+    for(vertex_descriptor v : boost::make_iterator_range(vertices(graph_)))
+      if(get(distance, v) < infinity && get(origin, v) == position) {
+        put(distance, v, infinity);
+        cleared.push_back(v);
+      }
+    // The rim: reached vertices next to a cleared one start with their distance.
+    for(vertex_descriptor v : cleared)
+      for(auto e : boost::make_iterator_range(out_edges(v, graph_))) {
+        const vertex_descriptor u = target(e, graph_);
+        const std::size_t i = get(vertex_index_, u);
+        if(state_[i] == unseen && get(distance, u) < infinity) {
+          handles_[i] = heap_.push(Node{get(distance, u), u});
+          state_[i] = queued;
+        }
+      }
+    const std::size_t i = get(vertex_index_, s);
+    put(distance, s, 0.);
+    put(origin, s, position);
+    if(state_[i] == queued) heap_.increase(handles_[i], Node{0., s});
+    else handles_[i] = heap_.push(Node{0., s});
+    state_[i] = queued;
+    return settle(weight, distance, origin);
+  }
+
   const Graph& graph() const { return graph_; }
 
 private:

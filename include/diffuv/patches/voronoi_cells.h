@@ -146,11 +146,12 @@ public:
       if(!(best_d > 0)) return false;
       chosen.push_back(best);
     }
-    std::vector<std::size_t> seeds = seeds_;
-    seeds[k] = chosen[0];
-    seeds.push_back(chosen[1]);
-    seeds.push_back(chosen[2]);
-    set_seeds(std::move(seeds));
+    // Only cell k and the cells next to it change: moved and added seeds
+    // instead of a whole run (a mesh with many fingers has tens of caps).
+    seeds_[k] = chosen[0];
+    dijkstra_.move_source(k, chosen[0], get(boost::edge_weight, dual_), distance_map(), origin_map());
+    add_seed(chosen[1]);
+    add_seed(chosen[2]);
     return true;
   }
 
