@@ -342,6 +342,30 @@ TEST(QuadLayout, JudgeFindsThePatchesWhoseMapIsBad)
   EXPECT_TRUE(judge(laid).empty());
 }
 
+// The judge keeps its verdicts on quads from one call to the next (the
+// refinement asks after every round, and most quads come back unchanged). A
+// judge that has refined cow's layout, then is asked about that layout and
+// about another one, answers as a fresh judge does.
+TEST(QuadLayout, JudgeRemembersQuadsAndAnswersAsAFreshOne)
+{
+  const Mesh& cow = cgal_mesh("cow.off");
+  using Judge = diffuv::Raw_map_judge<Mesh, decltype(cow.points())>;
+  const Judge used(cow, cow.points());
+  Seg refined, other;
+  diffuv::Patching_report report;
+  ASSERT_TRUE(diffuv::disc_patches(cow, {}, cow.points(), refined, diffuv::Patching_options(), &report, used).ok());
+  ASSERT_GT(report.layout.rounds, 0u);
+  ASSERT_GT(report.layout.fans_reused, 0u) << "the rounds should share fans";
+  diffuv::Patching_options fewer;
+  fewer.quads.target_patches = 120;
+  ASSERT_TRUE(diffuv::disc_patches(cow, {}, cow.points(), other, fewer).ok());
+  for(const Seg* layout : {&refined, &other, &refined}) {
+    const auto remembered = used(*layout);
+    EXPECT_EQ(remembered, Judge(cow, cow.points())(*layout));
+    EXPECT_TRUE(std::is_sorted(remembered.begin(), remembered.end()));
+  }
+}
+
 TEST(QuadLayout, BearMeetsTheStretchTargetsOnceRefinedAndNearFoldsMended)
 {
   // The default pipeline of `diffuv param`: the layout refined by the judge,

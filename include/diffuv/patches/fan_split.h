@@ -13,6 +13,8 @@
 #ifndef DIFFUV_PATCHES_FAN_SPLIT_H
 #define DIFFUV_PATCHES_FAN_SPLIT_H
 
+#include <diffuv/internal/index_list_hash.h>
+
 #include <CGAL/boost/graph/iterator.h>
 
 #include <boost/graph/graph_traits.hpp>
@@ -317,6 +319,11 @@ Fan_failure fan_split(const Local_region<TriangleMesh>& r, const std::vector<int
   // A cut's edges cost their flattened length, more the farther they stray
   // from the straight segment, and more again next to another cut or the border.
   constexpr double stray_cost = 10.0, crowd_cost = 1.0, centre_cost = 100.0;
+  // Flattened edge lengths, by vertex and position in its neighbour list:
+  // every centre tried traces its cuts over the same edges.
+  std::vector<std::vector<double>> flat_length(nv);
+  for(std::size_t i = 0; i < nv; ++i)
+    for(int j : r.neighbours[i]) flat_length[i].push_back(std::hypot(X[i] - X[j], Y[i] - Y[j]));
 
   // Cuts from centre zc; `score` says how well its ring fits their directions.
   auto try_centre = [&](int zc, std::vector<std::vector<int>>& cuts, double& score) -> bool {
@@ -394,10 +401,15 @@ Fan_failure fan_split(const Local_region<TriangleMesh>& r, const std::vector<int
       const double sx = X[target] - X[zc], sy = Y[target] - Y[zc];
       const double squared_length = sx * sx + sy * sy;
       if(!(squared_length > 0)) return false;
+      std::vector<double> stray_of(nv, -1.);  // each vertex's, once per cut
       auto stray = [&](int i) {
-        const double px = X[i] - X[zc], py = Y[i] - Y[zc];
-        const double t = std::clamp((px * sx + py * sy) / squared_length, 0.0, 1.0);
-        return std::hypot(px - t * sx, py - t * sy) / std::sqrt(squared_length);
+        double& known = stray_of[static_cast<std::size_t>(i)];
+        if(known < 0) {
+          const double px = X[i] - X[zc], py = Y[i] - Y[zc];
+          const double t = std::clamp((px * sx + py * sy) / squared_length, 0.0, 1.0);
+          known = std::hypot(px - t * sx, py - t * sy) / std::sqrt(squared_length);
+        }
+        return known;
       };
       auto usable = [&](int i) {
         if(i == target) return true;
@@ -416,9 +428,10 @@ Fan_failure fan_split(const Local_region<TriangleMesh>& r, const std::vector<int
         queue.pop();
         if(dd > dist[i]) continue;
         if(i == target) break;
-        for(int j : r.neighbours[i]) {
+        for(std::size_t n = 0; n < r.neighbours[i].size(); ++n) {
+          const int j = r.neighbours[i][n];
           if(!usable(j) || j == first[a]) continue;
-          const double len = std::hypot(X[i] - X[j], Y[i] - Y[j]);
+          const double len = flat_length[static_cast<std::size_t>(i)][n];
           double w = len * (1 + stray_cost * stray(j));
           if(j != target && crowded[j]) w += crowd_cost * len;
           if(dd + w < dist[j]) {
@@ -539,6 +552,65 @@ Fan_failure fan_split(const Local_region<TriangleMesh>& r, const std::vector<int
   std::rotate(fan.opening.rbegin(), fan.opening.rbegin() + static_cast<std::ptrdiff_t>(shift), fan.opening.rend());
   return Fan_failure::none;
 }
+
+/// Fans already made, by what they were made from. `quad_layout()` builds the
+/// quads again after each refinement round, and a seed added in one place
+/// leaves most cells and dual regions as they were: their fans are looked up
+/// instead of flattened and traced again. The key is the whole input (faces in
+/// order, border loop, target vertices), so a hit gives exactly the fan that
+/// `fan_split()` would.
+template <class TriangleMesh>
+class Fan_memo {
+public:
+  using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
+  using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
+
+  /// A fan with its centre as a mesh vertex (the local ids are the region's).
+  struct Entry {
+    Fan_failure failure = Fan_failure::no_cuts;
+    Fan fan;
+    vertex_descriptor centre;
+  };
+
+  /// The fan of the region of `faces` bounded by `loop`, to `targets` (mesh
+  /// vertices on the loop): `fan_split(make_local_region(...), ...)`, made once.
+  template <class VertexPointMap>
+  const Entry& fan(const TriangleMesh& tm, VertexPointMap vpm, const std::vector<face_descriptor>& faces,
+                   const std::vector<vertex_descriptor>& loop, const std::vector<vertex_descriptor>& targets,
+                   std::vector<int>& scratch)
+  {
+    auto vindex = get(boost::vertex_index, tm);
+    auto findex = get(boost::face_index, tm);
+    std::vector<std::size_t> key;
+    key.reserve(faces.size() + loop.size() + targets.size() + 2);
+    for(face_descriptor f : faces) key.push_back(get(findex, f));
+    key.push_back(separator);
+    for(vertex_descriptor v : loop) key.push_back(get(vindex, v));
+    key.push_back(separator);
+    for(vertex_descriptor v : targets) key.push_back(get(vindex, v));
+    const auto found = memo_.find(key);
+    if(found != memo_.end()) {
+      ++hits_;
+      return found->second;
+    }
+    ++misses_;
+    const auto region = make_local_region(tm, vpm, faces, loop, scratch);
+    std::vector<int> local_targets;
+    for(vertex_descriptor v : targets) local_targets.push_back(region.local(get(vindex, v)));
+    Entry entry;
+    entry.failure = fan_split(region, local_targets, entry.fan);
+    if(entry.failure == Fan_failure::none) entry.centre = region.verts[entry.fan.centre];
+    return memo_.emplace(std::move(key), std::move(entry)).first->second;
+  }
+
+  std::size_t hits() const { return hits_; }
+  std::size_t misses() const { return misses_; }
+
+private:
+  static constexpr std::size_t separator = std::numeric_limits<std::size_t>::max();
+  std::unordered_map<std::vector<std::size_t>, Entry, Index_list_hash> memo_;
+  std::size_t hits_ = 0, misses_ = 0;
+};
 
 } // namespace internal
 } // namespace diffuv

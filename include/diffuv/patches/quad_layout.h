@@ -102,15 +102,23 @@ struct Quad_layout_report {
   std::size_t refined_cells = 0;     ///< seeds added by the refinement
   std::size_t framed_cells = 0;      ///< deep cells split into walls and a tip (extremities)
   std::size_t split_fallbacks = 0;   ///< fallback patches needing more than four corners (junctions, ear tips) cut between junctions (`split_at_junctions()`)
+  std::size_t fans_made = 0;         ///< fans flattened and traced, over all rounds
+  std::size_t fans_reused = 0;       ///< fans found unchanged from an earlier round (`internal::Fan_memo`)
 };
 
 namespace internal {
 
+/// Distances to cell centres already found, by cell (its faces, sorted), in
+/// the order of the key: `quad_layout()` asks after every refinement round.
+using Centre_distance_memo = std::unordered_map<std::vector<std::size_t>, std::vector<double>, Index_list_hash>;
+
 /// For every face, its distance (through the dual graph) to the deepest face
-/// of its cell (the face farthest from the cell's border).
+/// of its cell (the face farthest from the cell's border). The paths stay in
+/// their cell, so a cell's distances depend on its faces alone; with a memo,
+/// the cells seen before are looked up.
 template <class TriangleMesh, class VertexPointMap>
 std::vector<double> distance_to_cell_centres(const TriangleMesh& tm, const Segmentation<TriangleMesh>& cells,
-                                             VertexPointMap vpm)
+                                             VertexPointMap vpm, Centre_distance_memo* memo = nullptr)
 {
   using Dual = boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS, boost::no_property,
                                      boost::property<boost::edge_weight_t, double>>;
@@ -120,11 +128,24 @@ std::vector<double> distance_to_cell_centres(const TriangleMesh& tm, const Segme
     auto h = halfedge(f, tm);
     return CGAL::centroid(get(vpm, source(h, tm)), get(vpm, target(h, tm)), get(vpm, target(next(h, tm), tm)));
   };
+  std::vector<double> depth(nf, 0.), distance(nf, std::numeric_limits<double>::infinity());
+  const std::size_t nc = cells.number_of_patches();
+  std::vector<char> to_compute(nc, 1);
+  std::vector<std::vector<std::size_t>> keys(memo ? nc : 0);
+  if(memo)
+    for(std::size_t p = 0; p < nc; ++p) {
+      for(auto f : cells.patch_faces[p]) keys[p].push_back(get(findex, f));
+      std::sort(keys[p].begin(), keys[p].end());
+      const auto found = memo->find(keys[p]);
+      if(found == memo->end()) continue;
+      to_compute[p] = 0;
+      for(std::size_t i = 0; i < keys[p].size(); ++i) distance[keys[p][i]] = found->second[i];
+    }
   Dual dual(nf);
   std::vector<std::size_t> border;
   for(auto f : faces(tm)) {
     const std::size_t i = get(findex, f);
-    if(cells.face_patch[i] == Segmentation<TriangleMesh>::no_patch) continue;
+    if(cells.face_patch[i] == Segmentation<TriangleMesh>::no_patch || !to_compute[cells.face_patch[i]]) continue;
     bool on_border = false;
     for(auto h : CGAL::halfedges_around_face(halfedge(f, tm), tm)) {
       const auto g = face(opposite(h, tm), tm);
@@ -137,15 +158,14 @@ std::vector<double> distance_to_cell_centres(const TriangleMesh& tm, const Segme
     }
     if(on_border) border.push_back(i);
   }
-  std::vector<double> depth(nf, 0.), distance(nf, std::numeric_limits<double>::infinity());
   auto dindex = get(boost::vertex_index, dual);
   if(border.empty()) return distance;
   multi_source_dijkstra(dual, border, get(boost::edge_weight, dual), boost::make_iterator_property_map(depth.begin(), dindex));
   // The deepest face of each cell (on a tie, the one whose centroid comes
   // first in lexicographic order: a rule of the surface, not of the numbering).
   std::vector<std::size_t> deepest;
-  for(std::size_t p = 0; p < cells.number_of_patches(); ++p) {
-    if(cells.patch_faces[p].empty()) continue;
+  for(std::size_t p = 0; p < nc; ++p) {
+    if(cells.patch_faces[p].empty() || !to_compute[p]) continue;
     auto best = cells.patch_faces[p].front();
     for(auto f : cells.patch_faces[p]) {
       const double df = depth[get(findex, f)], db = depth[get(findex, best)];
@@ -153,9 +173,26 @@ std::vector<double> distance_to_cell_centres(const TriangleMesh& tm, const Segme
     }
     deepest.push_back(get(findex, best));
   }
-  multi_source_dijkstra(dual, deepest, get(boost::edge_weight, dual), boost::make_iterator_property_map(distance.begin(), dindex));
+  std::vector<double> found(nf, std::numeric_limits<double>::infinity());
+  multi_source_dijkstra(dual, deepest, get(boost::edge_weight, dual), boost::make_iterator_property_map(found.begin(), dindex));
+  for(std::size_t p = 0; p < nc; ++p) {
+    if(!to_compute[p]) continue;
+    for(auto f : cells.patch_faces[p]) distance[get(findex, f)] = found[get(findex, f)];
+    if(memo) {
+      std::vector<double> values;
+      for(std::size_t i : keys[p]) values.push_back(found[i]);
+      memo->emplace(std::move(keys[p]), std::move(values));
+    }
+  }
   return distance;
 }
+
+/// What `quad_layout()` keeps from one refinement round to the next.
+template <class TriangleMesh>
+struct Quads_memo {
+  Fan_memo<TriangleMesh> fans;
+  Centre_distance_memo centre_distances;
+};
 
 // A cell smaller than `min_faces` joins the neighbour of the same region it
 // shares the longest border with, if the union is a disc; smallest first.
@@ -381,7 +418,8 @@ bool frame_cell(const TriangleMesh& tm, VertexPointMap vpm,
 template <class TriangleMesh, class VertexPointMap>
 Status quads_from_cells(const TriangleMesh& tm, const Segmentation<TriangleMesh>& cells, VertexPointMap vpm,
                         Segmentation<TriangleMesh>& quads, const Quad_layout_options& options = Quad_layout_options(),
-                        Quad_layout_report* report = nullptr, const std::vector<std::size_t>* region_of_cell = nullptr)
+                        Quad_layout_report* report = nullptr, const std::vector<std::size_t>* region_of_cell = nullptr,
+                        internal::Quads_memo<TriangleMesh>* memo = nullptr)
 {
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
   using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
@@ -395,6 +433,8 @@ Status quads_from_cells(const TriangleMesh& tm, const Segmentation<TriangleMesh>
   r.cells = nc;
   std::vector<int> scratch(num_vertices(tm), -1);
   std::vector<char> fallback_cell(nc, 0);
+  internal::Quads_memo<TriangleMesh> own_memo;
+  internal::Fan_memo<TriangleMesh>& fans_made = memo ? memo->fans : own_memo.fans;
 
   // ---- arcs: runs of one neighbour between two junctions ----------------------
   struct Arc {
@@ -415,7 +455,7 @@ Status quads_from_cells(const TriangleMesh& tm, const Segmentation<TriangleMesh>
   std::vector<Arc> arcs;
   std::unordered_map<std::size_t, std::size_t> arc_of_edge;  // smallest edge index -> arc
   std::vector<Cell> cell(nc);
-  const std::vector<double> centre_distance = internal::distance_to_cell_centres(tm, cells, vpm);
+  const std::vector<double> centre_distance = internal::distance_to_cell_centres(tm, cells, vpm, memo ? &memo->centre_distances : nullptr);
   for(std::size_t c = 0; c < nc; ++c) {
     auto loops = patch_loops(tm, cells, c, vpm);
     if(loops.size() != 1) { fallback_cell[c] = 1; continue; }
@@ -600,19 +640,19 @@ Status quads_from_cells(const TriangleMesh& tm, const Segmentation<TriangleMesh>
       for(std::size_t a = 0; a < cc.arc.size(); ++a)
         if(!arcs[cc.arc[a]].collapsed) with_cut.push_back(a);
       if(with_cut.size() < 2) { fallback_cell[c] = 1; continue; }
-      const auto region = internal::make_local_region(tm, vpm, cells.patch_faces[c], cc.loop.vertices, scratch);
-      std::vector<int> targets;
-      for(std::size_t a : with_cut) targets.push_back(region.local(get(vindex, arcs[cc.arc[a]].mid)));
-      internal::Fan fan;
-      const bool split = internal::fan_split(region, targets, fan) == internal::Fan_failure::none;
+      std::vector<vertex_descriptor> targets;
+      for(std::size_t a : with_cut) targets.push_back(arcs[cc.arc[a]].mid);
+      const auto& made = fans_made.fan(tm, vpm, cells.patch_faces[c], cc.loop.vertices, targets, scratch);
+      const internal::Fan& fan = made.fan;
+      const bool split = made.failure == internal::Fan_failure::none;
       std::size_t thin = with_cut.size();
       if(split)
         for(std::size_t s = 0; s < fan.opening.size(); ++s)
           if(fan.opening[s] < options.min_opening && (thin == with_cut.size() || fan.opening[s] < fan.opening[thin])) thin = s;
       if(split && thin == with_cut.size()) {
         fans[c].cut_arcs = with_cut;
-        fans[c].sector_of_face = std::move(fan.sector_of_face);
-        fans[c].centre = region.verts[fan.centre];
+        fans[c].sector_of_face = fan.sector_of_face;
+        fans[c].centre = made.centre;
         fans[c].done = true;
         continue;
       }
@@ -630,8 +670,8 @@ Status quads_from_cells(const TriangleMesh& tm, const Segmentation<TriangleMesh>
       if(chosen == none) {
         if(split) { // a thin sector is better than no fan
           fans[c].cut_arcs = with_cut;
-          fans[c].sector_of_face = std::move(fan.sector_of_face);
-          fans[c].centre = region.verts[fan.centre];
+          fans[c].sector_of_face = fan.sector_of_face;
+          fans[c].centre = made.centre;
           fans[c].done = true;
         } else {
           fallback_cell[c] = 1;
@@ -727,7 +767,7 @@ Status quads_from_cells(const TriangleMesh& tm, const Segmentation<TriangleMesh>
         if(framed_junction[get(vindex, v)]) ok = false;
     }
     std::vector<std::array<vertex_descriptor, 4>> corners;
-    internal::Fan fan;
+    const internal::Fan* fan_of_region = nullptr;
     if(ok) {
       const auto loop = patch_loops(tm, duals, t, vpm).front();
       const std::size_t n = loop.vertices.size();
@@ -736,16 +776,17 @@ Status quads_from_cells(const TriangleMesh& tm, const Segmentation<TriangleMesh>
         if(is_mid[get(vindex, loop.vertices[i])]) mids.push_back(i);
       ok = mids.size() >= 2;
       if(ok) {
-        const auto region = internal::make_local_region(tm, vpm, duals.patch_faces[t], loop.vertices, scratch);
-        std::vector<int> targets;
-        for(std::size_t m : mids) targets.push_back(region.local(get(vindex, loop.vertices[m])));
-        ok = internal::fan_split(region, targets, fan) == internal::Fan_failure::none;
+        std::vector<vertex_descriptor> targets;
+        for(std::size_t m : mids) targets.push_back(loop.vertices[m]);
+        const auto& made = fans_made.fan(tm, vpm, duals.patch_faces[t], loop.vertices, targets, scratch);
+        ok = made.failure == internal::Fan_failure::none;
+        fan_of_region = &made.fan;
         for(std::size_t s = 0; ok && s < mids.size(); ++s) {
           // Sector s: centre -> mids[s] -> (corner) -> mids[s+1] -> centre, counter-clockwise.
           const vertex_descriptor m0 = loop.vertices[mids[s]], m1 = loop.vertices[mids[(s + 1) % mids.size()]];
           const vertex_descriptor z = corner_between(loop.vertices, mids[s], mids[(s + 1) % mids.size()]);
           if(z == boost::graph_traits<TriangleMesh>::null_vertex()) { ok = false; break; }
-          corners.push_back({z, m1, region.verts[fan.centre], m0});
+          corners.push_back({z, m1, made.centre, m0});
         }
       }
     }
@@ -754,7 +795,7 @@ Status quads_from_cells(const TriangleMesh& tm, const Segmentation<TriangleMesh>
       std::vector<std::size_t> region_of_sector(corners.size(), none);
       for(std::size_t f = 0; ok && f < duals.patch_faces[t].size(); ++f) {
         const std::size_t here = (*region_of_cell)[cells.face_patch[get(findex, duals.patch_faces[t][f])]];
-        std::size_t& there = region_of_sector[static_cast<std::size_t>(fan.sector_of_face[f])];
+        std::size_t& there = region_of_sector[static_cast<std::size_t>(fan_of_region->sector_of_face[f])];
         if(there == none) there = here;
         ok = there == here;
       }
@@ -762,7 +803,7 @@ Status quads_from_cells(const TriangleMesh& tm, const Segmentation<TriangleMesh>
     if(ok) {
       std::vector<std::vector<face_descriptor>> sectors(corners.size());
       for(std::size_t f = 0; f < duals.patch_faces[t].size(); ++f)
-        sectors[static_cast<std::size_t>(fan.sector_of_face[f])].push_back(duals.patch_faces[t][f]);
+        sectors[static_cast<std::size_t>(fan_of_region->sector_of_face[f])].push_back(duals.patch_faces[t][f]);
       for(std::size_t s = 0; s < corners.size(); ++s) add_quad(std::move(sectors[s]), corners[s]);
       continue;
     }
@@ -1012,6 +1053,7 @@ Status quad_layout(const TriangleMesh& tm, const std::vector<int>& face_labels, 
 
   Segmentation<TriangleMesh> cells;
   std::vector<std::size_t> region_of_cell;
+  internal::Quads_memo<TriangleMesh> memo;  // across rounds: most cells and fans come back unchanged
   for(std::size_t round = 0;; ++round) {
     // Cells of every region, until each is a disc.
     while(true) {
@@ -1104,7 +1146,7 @@ Status quad_layout(const TriangleMesh& tm, const std::vector<int>& face_labels, 
       for(std::size_t i = 0; i < keyed.size(); ++i) faces_of_cell[i] = keyed[i].second;
     }
     Quad_layout_report round_report;
-    quads_from_cells(tm, cells, vpm, layout, options, &round_report, labelled ? &region_of_cell : nullptr);
+    quads_from_cells(tm, cells, vpm, layout, options, &round_report, labelled ? &region_of_cell : nullptr, &memo);
     const std::size_t refined_so_far = r.refined_cells;
     r = round_report;
     r.rounds = round;
@@ -1154,6 +1196,8 @@ Status quad_layout(const TriangleMesh& tm, const std::vector<int>& face_labels, 
     layout.patch_part[p] = labelled ? ++rank[regions.patch_label[region]] : 0;
   }
   r.cells = cells.number_of_patches();
+  r.fans_made = memo.fans.misses();
+  r.fans_reused = memo.fans.hits();
   return Status();
 }
 
