@@ -413,6 +413,73 @@ TEST(QuadLayout, BearMeetsTheStretchTargetsOnceRefinedAndNearFoldsMended)
   EXPECT_GT(without.angle_mean, total.angle_mean);
 }
 
+// The fallback patches' corners by their maps: every patch given corners
+// maps better through the default pipeline (whole atlas mapped again here,
+// not through the function's own scoring) than with the rule's corners, the
+// corners lie on the patch's border counter-clockwise, the quads and the faces
+// stay as they were, and the choice does not depend on the threads.
+TEST(QuadLayout, FallbackCornersChosenByTheirMapsServeThemBetter)
+{
+  const Mesh& cow = cgal_mesh("cow.off");
+  const Seg rule = automatic_layout(cow);
+  Seg chosen = rule;
+  diffuv::Fallback_corner_options one_thread;
+  one_thread.threads = 1;
+  const std::size_t set = diffuv::choose_fallback_corners(cow, cow.points(), chosen, one_thread);
+  ASSERT_GT(set, 5u);
+  Seg two = rule;
+  diffuv::Fallback_corner_options two_threads;
+  two_threads.threads = 2;
+  EXPECT_EQ(diffuv::choose_fallback_corners(cow, cow.points(), two, two_threads), set);
+  EXPECT_EQ(two.patch_corners, chosen.patch_corners);
+  ASSERT_EQ(chosen.number_of_patches(), rule.number_of_patches());
+  EXPECT_EQ(chosen.face_patch, rule.face_patch);
+
+  auto map_all = [&](const Seg& seg) {
+    diffuv::Uv_atlas<Mesh> atlas(cow);
+    const auto results = diffuv::parameterize_patches(cow, seg, cow.points(), atlas);
+    std::vector<diffuv::Distortion_summary> d(results.size());
+    for(std::size_t p = 0; p < results.size(); ++p) {
+      EXPECT_TRUE(results[p].status.ok()) << p;
+      if(results[p].status.ok())
+        d[p] = diffuv::measure_distortion(cow, atlas.chart(results[p].chart).faces, cow.points(),
+                                          atlas.chart_texture_map(results[p].chart));
+    }
+    return d;
+  };
+  const auto before = map_all(rule), after = map_all(chosen);
+  std::size_t changed = 0;
+  diffuv::Distortion_summary total_before, total_after;
+  for(std::size_t p = 0; p < rule.number_of_patches(); ++p) {
+    total_before = diffuv::combined(total_before, before[p]);
+    total_after = diffuv::combined(total_after, after[p]);
+    EXPECT_TRUE(after[p].injective()) << p;
+    if(rule.corners(p)) {
+      ASSERT_TRUE(chosen.corners(p));
+      EXPECT_EQ(*chosen.corners(p), *rule.corners(p)) << p;
+      continue;
+    }
+    if(!chosen.corners(p)) {
+      EXPECT_EQ(after[p].stretch_l2, before[p].stretch_l2) << p;
+      continue;
+    }
+    ++changed;
+    EXPECT_LE(after[p].stretch_l2, 0.98 * before[p].stretch_l2) << p;
+    const auto loop = diffuv::patch_loops(cow, chosen, p, cow.points()).front();
+    const std::size_t n = loop.vertices.size();
+    std::array<std::size_t, 4> at{};
+    for(std::size_t k = 0; k < 4; ++k) {
+      at[k] = static_cast<std::size_t>(std::find(loop.vertices.begin(), loop.vertices.end(), (*chosen.corners(p))[k]) -
+                                       loop.vertices.begin());
+      ASSERT_LT(at[k], n) << p;
+    }
+    for(std::size_t k = 1; k < 4; ++k) EXPECT_LT((at[k - 1] + n - at[0]) % n, (at[k] + n - at[0]) % n) << p;
+  }
+  EXPECT_EQ(changed, set);
+  EXPECT_TRUE(total_after.injective());
+  EXPECT_LT(total_after.stretch_l2, total_before.stretch_l2);
+}
+
 TEST(QuadLayout, EveryChartOfTheDefaultAtlasIsOneToOne)
 {
   // The default pipeline on three meshes whose layouts had charts with a flat

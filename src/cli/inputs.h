@@ -190,6 +190,7 @@ inline std::string patching_clause(const diffuv::Patching_report& r, const Patch
       if(l.refined_cells > 0) s += ", " + std::to_string(l.refined_cells) + " refined";
     }
     if(l.fallback_patches > 0) s += ", " + std::to_string(l.fallback_patches) + " other patches";
+    if(r.corners_chosen > 0) s += " (" + std::to_string(r.corners_chosen) + " with corners chosen by their maps)";
     if(r.merged > 0) s += ", " + std::to_string(r.merged) + " merged (fewer than four border vertices)";
     if(r.cut > 0) s += ", " + std::to_string(r.cut) + (r.cut == 1 ? " region" : " regions") + " not a disc (cut into cells)";
   }

@@ -13,6 +13,8 @@
 
 #include <limits>
 #include <string>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace diffuv {
@@ -45,6 +47,9 @@ struct Patching_report {
   std::size_t cut = 0;             ///< non-disc patches cut into discs
   std::size_t caps_split = 0;      ///< caps split in two
   std::size_t flat_faces_handed = 0;  ///< faces flat on one side of their patch, handed to a neighbouring patch
+  /// patches without corners of the layout given corners by their maps (a
+  /// judge with `choose_corners()`, e.g. `Raw_map_judge`)
+  std::size_t corners_chosen = 0;
   std::vector<std::size_t> not_discs;  ///< patches left that are not discs (none unless `strict` or a cut failed)
   /// The four-sided layout left a patch that is not a disc (e.g. a closed mesh
   /// of a few faces, whose one-face patches merge into a closed one), so the
@@ -84,6 +89,13 @@ std::size_t merge_unmappable_patches(const TriangleMesh& tm, Segmentation<Triang
   seg = std::move(merged);
   return count;
 }
+
+// Whether a judge offers `choose_corners(Segmentation&)`.
+template <class Judge, class Seg, class = void>
+struct has_choose_corners : std::false_type {};
+template <class Judge, class Seg>
+struct has_choose_corners<Judge, Seg, std::void_t<decltype(std::declval<const Judge&>().choose_corners(std::declval<Seg&>()))>>
+  : std::true_type {};
 
 // disc_patches() with the four-sided layout.
 template <class TriangleMesh, class VertexPointMap, class Judge>
@@ -159,6 +171,8 @@ Status four_sided_patches(const TriangleMesh& tm, std::vector<int> face_labels, 
   for(std::size_t p = 0; p < seg.number_of_patches(); ++p)
     if(!check_patch_disc(tm, seg, p)) r.not_discs.push_back(p);
   if(!r.not_discs.empty()) return check_patch_disc(tm, seg, r.not_discs.front());
+  // A judge that can map patches may also choose the fallback patches' corners.
+  if constexpr(has_choose_corners<Judge, Segmentation<TriangleMesh>>::value) r.corners_chosen = judge.choose_corners(seg);
   return Status();
 }
 
