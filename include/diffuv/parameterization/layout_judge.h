@@ -76,15 +76,13 @@ std::size_t choose_fallback_corners(const TriangleMesh& tm, VertexPointMap vpm, 
     const auto results = parameterize_patches(tm, trial, vpm, atlas, Fmm_distance_tag(), Fibonacci_heap_tag(),
                                               Repair_options(), nullptr, true, options.threads);
     std::vector<double> scores(patches.size(), std::numeric_limits<double>::infinity());
-    std::vector<Corners> used(patches.size(), Segmentation<TriangleMesh>::no_corners());
     for(std::size_t i = 0; i < patches.size(); ++i) {
       const auto& r = results[patches[i]];
       if(!r.status) continue;
       const Distortion_summary d = measure_distortion(tm, atlas.chart(r.chart).faces, vpm, atlas.chart_texture_map(r.chart));
       if(d.injective()) scores[i] = d.stretch_l2;
-      used[i] = r.sides.corners;
     }
-    return std::make_pair(scores, used);
+    return scores;
   };
 
   // The rule's corners, and the patches they serve badly.
@@ -98,7 +96,7 @@ std::size_t choose_fallback_corners(const TriangleMesh& tm, VertexPointMap vpm, 
   std::vector<Corners> best_corners;
   std::vector<std::vector<Corners>> candidates;
   for(std::size_t i = 0; i < fallback.size(); ++i) {
-    if(!(by_rule.first[i] > options.min_stretch)) continue;
+    if(!(by_rule[i] > options.min_stretch)) continue;
     const auto loops = patch_loops(tm, seg, fallback[i], vpm);
     if(loops.size() != 1 || loops.front().vertices.size() < 4) continue;
     const auto& loop = loops.front();
@@ -130,8 +128,8 @@ std::size_t choose_fallback_corners(const TriangleMesh& tm, VertexPointMap vpm, 
           for(std::size_t d = c + 1; d < k; ++d)
             choices.push_back({loop.vertices[order[a]], loop.vertices[order[b]], loop.vertices[order[c]], loop.vertices[order[d]]});
     bad.push_back(fallback[i]);
-    best.push_back(by_rule.first[i]);
-    by_rule_score.push_back(by_rule.first[i]);
+    best.push_back(by_rule[i]);
+    by_rule_score.push_back(by_rule[i]);
     best_corners.push_back(Segmentation<TriangleMesh>::no_corners());
     candidates.push_back(std::move(choices));
   }
@@ -151,8 +149,8 @@ std::size_t choose_fallback_corners(const TriangleMesh& tm, VertexPointMap vpm, 
     const auto scored = score(patches, corners);
     for(std::size_t t = 0; t < patches.size(); ++t) {
       const std::size_t i = which[t];
-      if(scored.first[t] < by_rule_score[i] * (1. - options.min_gain) && scored.first[t] < best[i]) {
-        best[i] = scored.first[t];
+      if(scored[t] < by_rule_score[i] * (1. - options.min_gain) && scored[t] < best[i]) {
+        best[i] = scored[t];
         best_corners[i] = corners[t];
       }
     }
