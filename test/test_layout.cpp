@@ -623,6 +623,49 @@ TEST(QuadLayout, ChartsAreDrawnOnRectanglesOfTheirAspect)
   EXPECT_NEAR(corner.y(), 0.5, 1e-12);
 }
 
+
+TEST(QuadLayout, ChartRectanglesHaveTheLeastStretchOfAnyAspect)
+{
+  // On cow's default atlas, each chart's rectangle is checked against the L2
+  // stretch that measure_distortion() gives for other aspects: 10 % wider, 10 %
+  // narrower, and the mean lengths of its opposite sides (the rule before);
+  // none is lower. Over the whole atlas the chosen rectangles lower the L2.
+  const Mesh& m = cgal_mesh("cow.off");
+  const Seg seg = automatic_layout(m);
+  diffuv::Uv_atlas<Mesh> atlas(m);
+  const auto results = diffuv::parameterize_patches(m, seg, m.points(), atlas);
+  diffuv::Distortion_summary chosen_total, sides_total;
+  std::size_t checked = 0, differ = 0;
+  for(const auto& r : results) {
+    ASSERT_TRUE(r.status.ok());
+    const auto& chart = atlas.chart(r.chart);
+    const std::array<double, 2> chosen = chart.size;
+    EXPECT_DOUBLE_EQ(std::max(chosen[0], chosen[1]), 1.0);
+    auto l2_on = [&](double width, double height) {
+      const auto uv = atlas.chart_uv_map(r.chart);
+      auto scaled = boost::make_function_property_map<vertex_descriptor>([&](vertex_descriptor v) {
+        const auto q = get(uv, v);
+        return diffuv::Uv_atlas<Mesh>::Point_2(q.x() * width, q.y() * height);
+      });
+      return diffuv::measure_distortion(m, chart.faces, m.points(), scaled);
+    };
+    const auto at_chosen = l2_on(chosen[0], chosen[1]);
+    EXPECT_NEAR(at_chosen.stretch_l2,
+                diffuv::measure_distortion(m, chart.faces, m.points(), atlas.chart_texture_map(r.chart)).stretch_l2, 1e-12);
+    EXPECT_LE(at_chosen.stretch_l2, l2_on(chosen[0] * 1.1, chosen[1]).stretch_l2 + 1e-12);
+    EXPECT_LE(at_chosen.stretch_l2, l2_on(chosen[0] / 1.1, chosen[1]).stretch_l2 + 1e-12);
+    const auto by_sides = diffuv::chart_size(r.sides, m.points());
+    const auto at_sides = l2_on(by_sides[0], by_sides[1]);
+    EXPECT_LE(at_chosen.stretch_l2, at_sides.stretch_l2 + 1e-12);
+    differ += std::abs(chosen[0] / chosen[1] - by_sides[0] / by_sides[1]) > 0.05 * by_sides[0] / by_sides[1];
+    chosen_total = diffuv::combined(chosen_total, at_chosen);
+    sides_total = diffuv::combined(sides_total, at_sides);
+    ++checked;
+  }
+  EXPECT_EQ(checked, seg.number_of_patches());
+  EXPECT_GT(differ, checked / 10);  // the sides' rule is not what is chosen
+  EXPECT_LT(chosen_total.stretch_l2, sides_total.stretch_l2);
+}
 TEST(ObjCharts, ChartsAreFacesJoinedBySharedTextureCoordinates)
 {
   // Two triangles sharing an edge with the same vt at both ends: one chart;

@@ -537,7 +537,7 @@ void add_param_command(CLI::App& app)
                                       "triangles in red, the four sides in colour)");
   cmd->add_flag("--unit-squares", options->unit_squares,
                 "Write every chart on the unit square (the canonical (u,v)) instead of on a rectangle of its own "
-                "aspect (the mean lengths of its two pairs of opposite sides); the table then measures the squares");
+                "aspect (the aspect with the least stretch for the chart's map); the table then measures the squares");
   cmd->add_option("--runs", options->runs, "Run the parameterization N times and report the median time")
       ->check(CLI::Range(1, 1000))
       ->capture_default_str();

@@ -8,6 +8,7 @@
 #include <diffuv/error.h>
 #include <diffuv/graph/edge_length_map.h>
 #include <diffuv/graph/heap_tags.h>
+#include <diffuv/parameterization/chart_rectangle.h>
 #include <diffuv/parameterization/diffusion_coordinates.h>
 #include <diffuv/parameterization/repair_folds.h>
 #include <diffuv/patches/region_sides.h>
@@ -177,8 +178,10 @@ std::vector<Patch_result<TriangleMesh>> parameterize_patches(const TriangleMesh&
     if(!results[p].status) continue;
     const auto start = std::chrono::steady_clock::now();
     results[p].chart = atlas.add_chart(seg.patch_faces[p], std::move(charts[p].vertices), std::move(charts[p].uv));
-    const auto size = chart_size(results[p].sides, vpm);
-    atlas.set_chart_size(results[p].chart, size[0], size[1]);
+    const std::size_t c = results[p].chart;
+    const auto size = stretch_optimal_rectangle(tm, atlas.chart(c).faces, vpm, atlas.chart_uv_map(c),
+                                                chart_size(results[p].sides, vpm));
+    atlas.set_chart_size(c, size[0], size[1]);
     results[p].milliseconds +=
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   }
