@@ -36,10 +36,10 @@
 #include <diffuv/correspondence/correspondence.h>
 #include <diffuv/correspondence/nearest_face_labels.h>
 #include <diffuv/correspondence/labelled_atlas.h>
-#include <diffuv/error.h>
+#include <diffuv/core/error.h>
 #include <diffuv/graph/distance_tags.h>
 #include <diffuv/io/read_mesh.h>
-#include <diffuv/patches/disc_patches.h>
+#include <diffuv/layout/disc_patches.h>
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>

@@ -51,8 +51,8 @@
 #include "plot_png.h"
 
 #include <diffuv/atlas/Uv_atlas.h>
-#include <diffuv/compare/cgal_parameterizers.h>
-#include <diffuv/error.h>
+#include "compare/cgal_parameterizers.h"
+#include <diffuv/core/error.h>
 #include <diffuv/graph/distance_tags.h>
 #include <diffuv/graph/edge_length_map.h>
 #include <diffuv/graph/fast_marching.h>
@@ -62,7 +62,7 @@
 #include <diffuv/parameterization/diffusion_coordinates.h>
 #include <diffuv/parameterization/parameterize_patches.h>
 #include <diffuv/parameterization/repair_folds.h>
-#include <diffuv/patches/disc_patches.h>
+#include <diffuv/layout/disc_patches.h>
 #include <diffuv/patches/region_sides.h>
 #include <diffuv/patches/segmentation.h>
 

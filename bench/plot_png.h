@@ -7,7 +7,7 @@
 #ifndef DIFFUV_BENCH_PLOT_PNG_H
 #define DIFFUV_BENCH_PLOT_PNG_H
 
-#include <diffuv/io/write_texture.h>
+#include <diffuv/render/texture.h>
 
 #include <algorithm>
 #include <array>

@@ -9,7 +9,7 @@
 // Writes cgal_parameterize.off (x = u, y = v) and cgal_parameterize.obj.
 #include <diffuv/cgal/Diffusion_parameterizer_3.h>
 #include <diffuv/io/selection_file.h>
-#include <diffuv/io/write_obj.h>
+#include <diffuv/output/write_obj.h>
 
 #include <CGAL/Polyhedron_3.h>
 #include <CGAL/Simple_cartesian.h>

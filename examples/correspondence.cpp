@@ -12,7 +12,7 @@
 #include <diffuv/correspondence/nearest_face_labels.h>
 #include <diffuv/correspondence/transfer.h>
 #include <diffuv/io/read_mesh.h>
-#include <diffuv/patches/disc_patches.h>
+#include <diffuv/layout/disc_patches.h>
 
 #include <CGAL/Aff_transformation_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>

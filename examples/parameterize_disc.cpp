@@ -5,7 +5,7 @@
 // Default: CGAL's nefertiti.off with square_corners.selection.txt.
 #include <diffuv/io/read_mesh.h>
 #include <diffuv/io/selection_file.h>
-#include <diffuv/io/write_obj.h>
+#include <diffuv/output/write_obj.h>
 #include <diffuv/parameterization/parameterize_disc.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>

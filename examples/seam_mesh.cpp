@@ -15,7 +15,7 @@
 // ERROR_NO_TOPOLOGICAL_DISC (CGAL's mean value coordinates, which this
 // example replaces, map such a mesh with its holes inside the disc).
 #include <diffuv/cgal/Diffusion_parameterizer_3.h>
-#include <diffuv/io/write_obj.h>
+#include <diffuv/output/write_obj.h>
 
 #include <CGAL/Polyhedron_3.h>
 #include <CGAL/Simple_cartesian.h>

@@ -6,7 +6,7 @@
 #include <diffuv/io/labels.h>
 #include <diffuv/io/read_mesh.h>
 #include <diffuv/parameterization/parameterize_patches.h>
-#include <diffuv/patches/disc_patches.h>
+#include <diffuv/layout/disc_patches.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>

@@ -4,7 +4,7 @@
 #include "test_data.h"
 
 #include <diffuv/patches/clean_labels.h>
-#include <diffuv/patches/disc_patches.h>
+#include <diffuv/layout/disc_patches.h>
 #include <diffuv/patches/segmentation.h>
 
 #include <algorithm>

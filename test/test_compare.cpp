@@ -4,11 +4,11 @@
 // injective map), linear precision of mean value and cotangent weights (a
 // flat patch is reproduced exactly), the symmetry of a regular grid (every
 // symmetric weight reproduces it), and our corner and side convention.
-#include <diffuv/compare/cgal_parameterizers.h>
+#include "compare/cgal_parameterizers.h"
 #include <diffuv/io/selection_file.h>
 #include <diffuv/metrics/distortion.h>
-#include <diffuv/patches/disc_patches.h>
-#include <diffuv/patches/four_sides.h>
+#include <diffuv/layout/disc_patches.h>
+#include <diffuv/patches/corners.h>
 #include <diffuv/patches/region_sides.h>
 
 #include "test_data.h"

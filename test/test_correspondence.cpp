@@ -7,8 +7,8 @@
 #include <diffuv/correspondence/labelled_atlas.h>
 #include <diffuv/correspondence/nearest_face_labels.h>
 #include <diffuv/correspondence/transfer.h>
-#include <diffuv/patches/disc_patches.h>
-#include <diffuv/patches/sub_patches.h>
+#include <diffuv/layout/disc_patches.h>
+#include <diffuv/layout/sub_patches.h>
 
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polygon_mesh_processing/remesh.h>

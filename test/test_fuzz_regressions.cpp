@@ -14,7 +14,7 @@
 #include "fuzz/painted_colors.h"
 #include "fuzz/selection_file.h"
 
-#include <diffuv/error.h>
+#include <diffuv/core/error.h>
 #include <diffuv/io/read_mesh.h>
 
 #include <gtest/gtest.h>

@@ -9,7 +9,7 @@
 #include <diffuv/io/atomic_file.h>
 #include <diffuv/io/read_mesh.h>
 #include <diffuv/io/selection_file.h>
-#include <diffuv/io/write_obj.h>
+#include <diffuv/output/write_obj.h>
 
 #include <gtest/gtest.h>
 

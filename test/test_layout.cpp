@@ -1,4 +1,4 @@
-// Tests of the four-sided layout (patches/quad_layout.h): its invariants on
+// Tests of the four-sided layout (layout/quad_layout.h): its invariants on
 // real meshes (discs, four corners, conforming sides, no flat triangle), that
 // it depends on the surface only (shuffled copies), labelled regions, a layout
 // read back, the fan split it is made of, the judge that refines it, the
@@ -10,10 +10,10 @@
 #include <diffuv/parameterization/layout_judge.h>
 #include <diffuv/parameterization/parameterize_disc.h>
 #include <diffuv/parameterization/parameterize_patches.h>
-#include <diffuv/patches/disc_patches.h>
-#include <diffuv/patches/fan_split.h>
+#include <diffuv/layout/disc_patches.h>
+#include <diffuv/layout/fan_split.h>
 #include <diffuv/patches/flat_faces.h>
-#include <diffuv/patches/quad_layout.h>
+#include <diffuv/layout/quad_layout.h>
 #include <diffuv/patches/region_sides.h>
 
 #include <algorithm>
@@ -654,7 +654,7 @@ TEST(QuadLayout, ChartRectanglesHaveTheLeastStretchOfAnyAspect)
                 diffuv::measure_distortion(m, chart.faces, m.points(), atlas.chart_texture_map(r.chart)).stretch_l2, 1e-12);
     EXPECT_LE(at_chosen.stretch_l2, l2_on(chosen[0] * 1.1, chosen[1]).stretch_l2 + 1e-12);
     EXPECT_LE(at_chosen.stretch_l2, l2_on(chosen[0] / 1.1, chosen[1]).stretch_l2 + 1e-12);
-    const auto by_sides = diffuv::chart_size(r.sides, m.points());
+    const auto by_sides = diffuv::side_length_rectangle(r.sides, m.points());
     const auto at_sides = l2_on(by_sides[0], by_sides[1]);
     EXPECT_LE(at_chosen.stretch_l2, at_sides.stretch_l2 + 1e-12);
     differ += std::abs(chosen[0] / chosen[1] - by_sides[0] / by_sides[1]) > 0.05 * by_sides[0] / by_sides[1];

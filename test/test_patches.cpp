@@ -4,7 +4,7 @@
 
 #include <diffuv/parameterization/parameterize_disc.h>
 #include <diffuv/parameterization/parameterize_patches.h>
-#include <diffuv/patches/disc_patches.h>
+#include <diffuv/layout/disc_patches.h>
 #include <diffuv/patches/flat_faces.h>
 #include <diffuv/graph/patch_graph.h>
 #include <diffuv/patches/region_sides.h>

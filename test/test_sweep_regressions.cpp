@@ -5,7 +5,7 @@
 #include <diffuv/atlas/Uv_atlas.h>
 #include <diffuv/metrics/distortion.h>
 #include <diffuv/parameterization/parameterize_patches.h>
-#include <diffuv/patches/disc_patches.h>
+#include <diffuv/layout/disc_patches.h>
 
 #include <string>
 #include <vector>

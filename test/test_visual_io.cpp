@@ -8,8 +8,9 @@
 // triangles are made by hand on a flat grid.
 #include "test_data.h"
 
-#include <diffuv/io/write_svg.h>
-#include <diffuv/io/write_texture.h>
+#include <diffuv/output/write_svg.h>
+#include <diffuv/output/write_obj.h>
+#include <diffuv/render/texture.h>
 #include <diffuv/parameterization/parameterize_disc.h>
 
 // The decoder, for the round trip only: a static copy in this file.

@@ -1,44 +1,76 @@
-// diffuv: diffusion-based surface parameterization on CGAL — umbrella header.
+// diffuv: diffusion-based surface parameterization on CGAL -- umbrella header.
 //
-// The folders follow the pipeline:
-//   graph/             multi-source Dijkstra, heap tags, edge lengths
-//   patches/           disc check, boundary loop, four sides and corners
-//   parameterization/  diffusion coordinates (u, v) of a patch, fold repair; a whole disc mesh
-//   cgal/              Diffusion_parameterizer_3, a CGAL Parameterizer_3 model
-//   atlas/             the uv-map: (chart, vertex) -> uv array, kd-tree, point location
-//   metrics/           distortion measures of a chart
-//   io/                mesh reader, selection files, OBJ and CSV writers
+// Includes every public header of the core target (diffuv::diffuv), layer by
+// layer, lowest first (doc/design.md, "Layers"; scripts/check_layers.py
+// checks that this list is complete). Not included: render/, the optional
+// diffuv::render target (pictures and PNG files, through stb).
+//
+//   core/             the vocabulary: Status and the error types, the four sides, colours
+//   io/               reading: meshes (OFF, OBJ, PLY, STL), labels, painted regions, corners, colours; safe output files
+//   graph/            multi-source Dijkstra (Fibonacci heap), fast marching, exact geodesics, edge lengths
+//   patches/          labels -> disc patches: segmentation, boundary loops, corners and four sides, flat triangles
+//   layout/           the four-sided layout (Voronoi cells -> quads) and disc_patches(), every way to patches
+//   atlas/            the uv-map: (chart, vertex) -> uv array, kd-tree, point location
+//   metrics/          distortion and injectivity of a chart
+//   parameterization/ diffusion coordinates, the fold repair, a disc or a whole mesh into an atlas
+//   cgal/             Diffusion_parameterizer_3, a model of CGAL's Parameterizer_3
+//   correspondence/   mesh A -> mesh B through (region, u, v); attribute transfer
+//   output/           writers: OBJ + MTL, uv table, SVG of a chart, labelled and coloured PLY
 #ifndef DIFFUV_DIFFUV_H
 #define DIFFUV_DIFFUV_H
 
-#include <diffuv/error.h>
+#include <diffuv/core/error.h>
+#include <diffuv/core/four_sides.h>
+
+#include <diffuv/io/atomic_file.h>
+#include <diffuv/io/labels.h>
+#include <diffuv/io/read_mesh.h>
+#include <diffuv/io/read_obj_charts.h>
+#include <diffuv/io/selection_file.h>
+#include <diffuv/io/vertex_colors.h>
+
+#include <diffuv/graph/distance_tags.h>
 #include <diffuv/graph/edge_length_map.h>
+#include <diffuv/graph/exact_geodesics.h>
+#include <diffuv/graph/fast_marching.h>
 #include <diffuv/graph/heap_tags.h>
 #include <diffuv/graph/multi_source_dijkstra.h>
-#include <diffuv/patches/disc_topology.h>
-#include <diffuv/patches/four_sides.h>
-#include <diffuv/patches/segmentation.h>
-#include <diffuv/patches/region_sides.h>
-#include <diffuv/patches/split_patches.h>
-#include <diffuv/patches/disc_patches.h>
+#include <diffuv/graph/patch_graph.h>
+
 #include <diffuv/patches/clean_labels.h>
+#include <diffuv/patches/corners.h>
+#include <diffuv/patches/disc_topology.h>
+#include <diffuv/patches/flat_faces.h>
+#include <diffuv/patches/region_sides.h>
+#include <diffuv/patches/segmentation.h>
+#include <diffuv/patches/split_patches.h>
+
+#include <diffuv/layout/disc_patches.h>
+#include <diffuv/layout/fan_split.h>
+#include <diffuv/layout/quad_layout.h>
+#include <diffuv/layout/sub_patches.h>
+#include <diffuv/layout/voronoi_cells.h>
+
+#include <diffuv/atlas/Uv_atlas.h>
+
+#include <diffuv/metrics/distortion.h>
+
+#include <diffuv/parameterization/chart_rectangle.h>
 #include <diffuv/parameterization/diffusion_coordinates.h>
+#include <diffuv/parameterization/layout_judge.h>
 #include <diffuv/parameterization/parameterize_disc.h>
 #include <diffuv/parameterization/parameterize_patches.h>
 #include <diffuv/parameterization/repair_folds.h>
+
 #include <diffuv/cgal/Diffusion_parameterizer_3.h>
-#include <diffuv/atlas/Uv_atlas.h>
-#include <diffuv/correspondence/labelled_atlas.h>
+
 #include <diffuv/correspondence/correspondence.h>
-#include <diffuv/correspondence/transfer.h>
+#include <diffuv/correspondence/labelled_atlas.h>
 #include <diffuv/correspondence/nearest_face_labels.h>
-#include <diffuv/metrics/distortion.h>
-#include <diffuv/io/atomic_file.h>
-#include <diffuv/io/labels.h>
-#include <diffuv/io/vertex_colors.h>
-#include <diffuv/io/read_mesh.h>
-#include <diffuv/io/selection_file.h>
-#include <diffuv/io/write_obj.h>
-#include <diffuv/io/write_uv_table.h>
+#include <diffuv/correspondence/transfer.h>
+
+#include <diffuv/output/write_obj.h>
+#include <diffuv/output/write_svg.h>
+#include <diffuv/output/write_uv_table.h>
 
 #endif // DIFFUV_DIFFUV_H

@@ -5,10 +5,10 @@
 
 #include <diffuv/atlas/Uv_atlas.h>
 #include <diffuv/cgal/Diffusion_parameterizer_3.h>
-#include <diffuv/compare/cgal_parameterizers.h>
+#include "compare/cgal_parameterizers.h"
 #include <diffuv/io/atomic_file.h>
 #include <diffuv/io/selection_file.h>
-#include <diffuv/io/write_obj.h>
+#include <diffuv/output/write_obj.h>
 #include <diffuv/metrics/distortion.h>
 #include <diffuv/parameterization/diffusion_coordinates.h>
 #include <diffuv/parameterization/repair_folds.h>

@@ -8,7 +8,7 @@
 #include <diffuv/correspondence/nearest_face_labels.h>
 #include <diffuv/correspondence/transfer.h>
 #include <diffuv/io/atomic_file.h>
-#include <diffuv/io/number_format.h>
+#include <diffuv/internal/number_format.h>
 #include <diffuv/io/vertex_colors.h>
 
 #include <CGAL/Polygon_mesh_processing/bbox.h>

@@ -3,12 +3,12 @@
 #ifndef DIFFUV_CLI_INPUTS_H
 #define DIFFUV_CLI_INPUTS_H
 
-#include <diffuv/error.h>
+#include <diffuv/core/error.h>
 #include <diffuv/graph/distance_tags.h>
 #include <diffuv/io/labels.h>
 #include <diffuv/io/read_mesh.h>
 #include <diffuv/parameterization/layout_judge.h>
-#include <diffuv/patches/disc_patches.h>
+#include <diffuv/layout/disc_patches.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>

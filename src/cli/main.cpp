@@ -2,7 +2,7 @@
 // turns every error into one line on stderr and an exit code.
 #include "commands.h"
 
-#include <diffuv/error.h>
+#include <diffuv/core/error.h>
 
 #include <cstring>
 #include <exception>

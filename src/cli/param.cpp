@@ -5,10 +5,10 @@
 #include <diffuv/atlas/Uv_atlas.h>
 #include <diffuv/io/atomic_file.h>
 #include <diffuv/io/selection_file.h>
-#include <diffuv/io/write_obj.h>
-#include <diffuv/io/write_svg.h>
-#include <diffuv/io/write_texture.h>
-#include <diffuv/io/write_uv_table.h>
+#include <diffuv/output/write_obj.h>
+#include <diffuv/output/write_svg.h>
+#include <diffuv/render/texture.h>
+#include <diffuv/output/write_uv_table.h>
 #include <diffuv/metrics/distortion.h>
 #include <diffuv/parameterization/parameterize_disc.h>
 #include <diffuv/parameterization/parameterize_patches.h>

@@ -15,11 +15,11 @@
 #include "fuzz_input.h"
 
 #include <diffuv/atlas/Uv_atlas.h>
-#include <diffuv/error.h>
+#include <diffuv/core/error.h>
 #include <diffuv/io/labels.h>
 #include <diffuv/io/read_mesh.h>
 #include <diffuv/parameterization/parameterize_patches.h>
-#include <diffuv/patches/disc_patches.h>
+#include <diffuv/layout/disc_patches.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>

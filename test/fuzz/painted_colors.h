@@ -10,7 +10,7 @@
 
 #include "fuzz_input.h"
 
-#include <diffuv/error.h>
+#include <diffuv/core/error.h>
 #include <diffuv/io/labels.h>
 #include <diffuv/io/vertex_colors.h>
 

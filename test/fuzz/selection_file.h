@@ -6,7 +6,7 @@
 
 #include "fuzz_input.h"
 
-#include <diffuv/error.h>
+#include <diffuv/core/error.h>
 #include <diffuv/io/selection_file.h>
 
 #include <cstddef>

@@ -18,7 +18,7 @@
 #ifndef DIFFUV_CGAL_DIFFUSION_PARAMETERIZER_3_H
 #define DIFFUV_CGAL_DIFFUSION_PARAMETERIZER_3_H
 
-#include <diffuv/error.h>
+#include <diffuv/core/error.h>
 #include <diffuv/parameterization/parameterize_disc.h>
 
 #include <CGAL/Default.h>

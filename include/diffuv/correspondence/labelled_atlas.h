@@ -10,13 +10,13 @@
 #define DIFFUV_CORRESPONDENCE_LABELLED_ATLAS_H
 
 #include <diffuv/atlas/Uv_atlas.h>
-#include <diffuv/error.h>
+#include <diffuv/core/error.h>
 #include <diffuv/graph/distance_tags.h>
 #include <diffuv/parameterization/parameterize_patches.h>
 #include <diffuv/parameterization/repair_folds.h>
 #include <diffuv/patches/clean_labels.h>
-#include <diffuv/patches/disc_patches.h>
-#include <diffuv/patches/sub_patches.h>
+#include <diffuv/layout/disc_patches.h>
+#include <diffuv/layout/sub_patches.h>
 
 #include <map>
 #include <stdexcept>

@@ -10,7 +10,7 @@
 #ifndef DIFFUV_GRAPH_DISTANCE_TAGS_H
 #define DIFFUV_GRAPH_DISTANCE_TAGS_H
 
-#include <diffuv/error.h>
+#include <diffuv/core/error.h>
 #include <diffuv/graph/exact_geodesics.h>
 #include <diffuv/graph/fast_marching.h>
 #include <diffuv/graph/heap_tags.h>

@@ -10,7 +10,7 @@
 #ifndef DIFFUV_GRAPH_EXACT_GEODESICS_H
 #define DIFFUV_GRAPH_EXACT_GEODESICS_H
 
-#include <diffuv/error.h>
+#include <diffuv/core/error.h>
 
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/Surface_mesh.h>

@@ -17,7 +17,7 @@
 #ifndef DIFFUV_GRAPH_FAST_MARCHING_H
 #define DIFFUV_GRAPH_FAST_MARCHING_H
 
-#include <diffuv/error.h>
+#include <diffuv/core/error.h>
 #include <diffuv/graph/heap_tags.h>
 
 #include <CGAL/boost/graph/graph_concepts.h>

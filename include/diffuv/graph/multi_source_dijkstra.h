@@ -8,7 +8,7 @@
 #ifndef DIFFUV_GRAPH_MULTI_SOURCE_DIJKSTRA_H
 #define DIFFUV_GRAPH_MULTI_SOURCE_DIJKSTRA_H
 
-#include <diffuv/error.h>
+#include <diffuv/core/error.h>
 #include <diffuv/graph/heap_tags.h>
 
 #include <boost/graph/graph_concepts.hpp>

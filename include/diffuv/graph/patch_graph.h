@@ -11,7 +11,7 @@
 #ifndef DIFFUV_GRAPH_PATCH_GRAPH_H
 #define DIFFUV_GRAPH_PATCH_GRAPH_H
 
-#include <diffuv/patches/four_sides.h>
+#include <diffuv/core/four_sides.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>

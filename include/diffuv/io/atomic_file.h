@@ -9,7 +9,7 @@
 #ifndef DIFFUV_IO_ATOMIC_FILE_H
 #define DIFFUV_IO_ATOMIC_FILE_H
 
-#include <diffuv/error.h>
+#include <diffuv/core/error.h>
 
 #include <unistd.h> // getpid
 

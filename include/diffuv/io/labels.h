@@ -13,9 +13,9 @@
 #ifndef DIFFUV_IO_LABELS_H
 #define DIFFUV_IO_LABELS_H
 
-#include <diffuv/error.h>
+#include <diffuv/core/error.h>
 #include <diffuv/io/atomic_file.h>
-#include <diffuv/io/number_format.h>
+#include <diffuv/internal/number_format.h>
 #include <diffuv/io/read_mesh.h>
 
 #include <CGAL/Dynamic_property_map.h>

@@ -15,7 +15,7 @@
 #ifndef DIFFUV_IO_READ_MESH_H
 #define DIFFUV_IO_READ_MESH_H
 
-#include <diffuv/error.h>
+#include <diffuv/core/error.h>
 
 #include <CGAL/IO/OBJ.h>
 #include <CGAL/exceptions.h>

@@ -9,7 +9,7 @@
 #ifndef DIFFUV_IO_READ_OBJ_CHARTS_H
 #define DIFFUV_IO_READ_OBJ_CHARTS_H
 
-#include <diffuv/error.h>
+#include <diffuv/core/error.h>
 
 #include <array>
 #include <charconv>

@@ -9,7 +9,7 @@
 #ifndef DIFFUV_IO_SELECTION_FILE_H
 #define DIFFUV_IO_SELECTION_FILE_H
 
-#include <diffuv/error.h>
+#include <diffuv/core/error.h>
 
 #include <boost/graph/graph_traits.hpp>
 

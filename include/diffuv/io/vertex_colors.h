@@ -5,7 +5,7 @@
 
 #include <diffuv/io/atomic_file.h>
 #include <diffuv/io/labels.h>
-#include <diffuv/io/number_format.h>
+#include <diffuv/internal/number_format.h>
 
 #include <CGAL/Dynamic_property_map.h>
 #include <CGAL/boost/graph/iterator.h>

@@ -12,6 +12,8 @@
 #ifndef DIFFUV_METRICS_DISTORTION_H
 #define DIFFUV_METRICS_DISTORTION_H
 
+#include <diffuv/internal/uv_triangle.h>
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Bbox_2.h>
 #include <CGAL/box_intersection_d.h>
@@ -71,13 +73,6 @@ struct Distortion_summary {
 
 namespace internal {
 
-/// A triangle's area counts as zero below this fraction of the chart's total:
-/// well above the rounding noise of a cross product, well below any real face.
-constexpr double degenerate_area_fraction = 1e-14;
-
-using Uv_point = CGAL::Exact_predicates_inexact_constructions_kernel::Point_2;
-using Uv_triangle = std::array<Uv_point, 3>;
-
 /// The vertices of face `f`, and how many it has (only the first three are stored).
 template <class TriangleMesh>
 std::pair<std::array<typename boost::graph_traits<TriangleMesh>::vertex_descriptor, 3>, std::size_t>
@@ -97,18 +92,6 @@ Uv_point uv_point(const UvMap& uv, const Vertex& v)
 {
   const auto& q = get(uv, v);
   return Uv_point(CGAL::to_double(q.x()), CGAL::to_double(q.y()));
-}
-
-inline double signed_area(const Uv_triangle& t)
-{
-  return 0.5 * ((t[1].x() - t[0].x()) * (t[2].y() - t[0].y()) - (t[2].x() - t[0].x()) * (t[1].y() - t[0].y()));
-}
-
-/// Whether a triangle with (possibly non-finite) area `a` is too thin to measure;
-/// written as a negation so that NaN counts as degenerate.
-inline bool is_degenerate_area(double a, double total)
-{
-  return !(std::isfinite(a) && std::abs(a) > degenerate_area_fraction * total);
 }
 
 /// Whether every vertex of `t` lies on or to the right of the directed line (p, q).
@@ -160,20 +143,6 @@ inline std::size_t count_overlaps(std::vector<Uv_triangle> triangles, const std:
     if(interiors_overlap(triangles[a.info()], triangles[b.info()])) ++count;
   });
   return count;
-}
-
-/// Singular values {max, min} of [[a, b], [c, d]] in closed form.
-///
-/// The matrix is a similarity [[e, -h], [h, e]] plus an anti-similarity
-/// [[f, g], [g, -f]]; its singular values are |(e,h)| + |(f,g)| and the
-/// difference of the two. The smaller one is taken as |det| / sigma_max,
-/// which does not cancel for nearly singular matrices.
-inline std::pair<double, double> singular_values_2x2(double a, double b, double c, double d)
-{
-  const double e = (a + d) / 2, f = (a - d) / 2, g = (c + b) / 2, h = (c - b) / 2;
-  const double s_max = std::hypot(e, h) + std::hypot(f, g);
-  const double s_min = s_max > 0 ? std::abs(a * d - b * c) / s_max : 0.0;
-  return {s_max, s_min};
 }
 
 template <class TriangleMesh, class FaceRange, class UvMap>

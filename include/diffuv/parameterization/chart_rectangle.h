@@ -11,16 +11,21 @@
 #ifndef DIFFUV_PARAMETERIZATION_CHART_RECTANGLE_H
 #define DIFFUV_PARAMETERIZATION_CHART_RECTANGLE_H
 
+#include <diffuv/core/four_sides.h>
+
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/number_utils.h>
+#include <CGAL/squared_distance_3.h>
 
 #include <boost/graph/graph_traits.hpp>
 #include <boost/property_map/property_map.hpp>
 
 #include <algorithm>
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <vector>
 
 namespace diffuv {
 
@@ -79,6 +84,27 @@ std::array<double, 2> stretch_optimal_rectangle(const TriangleMesh& tm, const Fa
   if(!(p > 0 && q > 0 && std::isfinite(p) && std::isfinite(q))) return fallback;
   const double aspect = std::sqrt(p / q);  // width / height
   return aspect >= 1 ? std::array<double, 2>{1., 1. / aspect} : std::array<double, 2>{aspect, 1.};
+}
+
+/// A chart's rectangle by its sides: the mean 3D length of its sides v1
+/// and v2 (along u) and of u1 and u2 (along v), scaled so that the larger is 1.
+/// A texture drawn on the rectangle (width, height) is then not stretched
+/// across the patch, where the unit square would stretch a long patch.
+///
+/// \returns {1, 1} if a pair of sides has no length
+template <class VertexDescriptor, class VertexPointMap>
+std::array<double, 2> side_length_rectangle(const Four_sides<VertexDescriptor>& sides, VertexPointMap vpm)
+{
+  auto length = [&](const std::vector<VertexDescriptor>& side) {
+    double sum = 0;
+    for(std::size_t i = 0; i + 1 < side.size(); ++i)
+      sum += std::sqrt(CGAL::to_double(CGAL::squared_distance(get(vpm, side[i]), get(vpm, side[i + 1]))));
+    return sum;
+  };
+  const double width = (length(sides.v1) + length(sides.v2)) / 2, height = (length(sides.u1) + length(sides.u2)) / 2;
+  if(!(width > 0 && height > 0 && std::isfinite(width) && std::isfinite(height))) return {1., 1.};
+  const double larger = std::max(width, height);
+  return {width / larger, height / larger};
 }
 
 } // namespace diffuv

@@ -6,11 +6,11 @@
 #ifndef DIFFUV_PARAMETERIZATION_DIFFUSION_COORDINATES_H
 #define DIFFUV_PARAMETERIZATION_DIFFUSION_COORDINATES_H
 
-#include <diffuv/error.h>
+#include <diffuv/core/error.h>
 #include <diffuv/graph/distance_tags.h>
 #include <diffuv/graph/heap_tags.h>
 #include <diffuv/graph/multi_source_dijkstra.h>
-#include <diffuv/patches/four_sides.h>
+#include <diffuv/core/four_sides.h>
 
 #include <boost/graph/graph_traits.hpp>
 #include <boost/property_map/property_map.hpp>
@@ -29,8 +29,6 @@
 
 namespace diffuv {
 
-/// Which of the four sides a distance field is measured from.
-enum class Side { u1 = 0, u2 = 1, v1 = 2, v2 = 3 };
 
 /// The relative distance of equation (2) of the paper, d1 / (d1 + d2), with
 /// its edge cases defined:
@@ -85,36 +83,35 @@ public:
   template <class WeightMap, class UvMap>
   Status compute(const Four_sides<vertex_descriptor>& sides, WeightMap weight, UvMap uv, bool parallel_passes = false)
   {
-    const std::array<const std::vector<vertex_descriptor>*, 4> sources = {&sides.u1, &sides.u2, &sides.v1, &sides.v2};
-    static const char* const names[4] = {"u1", "u2", "v1", "v2"};
     auto index = get(boost::vertex_index, graph_);
-    for(std::size_t s = 0; s < 4; ++s)
-      if(sources[s]->empty())
-        return Status(Status_code::empty_side, std::string("side ") + names[s]);
+    for(Side s : all_sides)
+      if(sides[s].empty())
+        return Status(Status_code::empty_side, std::string("side ") + side_name(s));
     std::array<Status, 4> status;
-    auto pass = [&](std::size_t s, auto& engine) {
-      status[s] = engine.run(*sources[s], weight, boost::make_iterator_property_map(distance_[s].begin(), index));
+    auto pass = [&](Side s, auto& engine) {
+      const std::size_t i = static_cast<std::size_t>(s);
+      status[i] = engine.run(sides[s], weight, boost::make_iterator_property_map(distance_[i].begin(), index));
     };
 #ifdef CGAL_LINKED_WITH_TBB
     if(parallel_passes) {
       // u1 and u2 here, v1 and v2 on another thread, each pair with its own engine.
       tbb::parallel_for(std::size_t(0), std::size_t(2), [&](std::size_t half) {
         if(half == 0) {
-          pass(0, engine_);
-          pass(1, engine_);
+          pass(Side::u1, engine_);
+          pass(Side::u2, engine_);
         } else {
           internal::Distance_engine<Graph, HeapTag, DistanceTag> other(graph_);
-          pass(2, other);
-          pass(3, other);
+          pass(Side::v1, other);
+          pass(Side::v2, other);
         }
       });
     } else
 #endif
     {
       (void)parallel_passes;
-      for(std::size_t s = 0; s < 4; ++s) {
+      for(Side s : all_sides) {
         pass(s, engine_);
-        if(!status[s]) return status[s];
+        if(!status[static_cast<std::size_t>(s)]) return status[static_cast<std::size_t>(s)];
       }
     }
     for(const Status& st : status)
@@ -125,8 +122,8 @@ public:
     both_sides_ = 0;
     for(vertex_descriptor v : boost::make_iterator_range(vertices(graph_))) {
       const std::size_t i = get(index, v);
-      const double du1 = distance_[0][i], du2 = distance_[1][i];
-      const double dv1 = distance_[2][i], dv2 = distance_[3][i];
+      const double du1 = distances(Side::u1)[i], du2 = distances(Side::u2)[i];
+      const double dv1 = distances(Side::v1)[i], dv2 = distances(Side::v2)[i];
       if(std::isinf(du1) || std::isinf(du2) || std::isinf(dv1) || std::isinf(dv2)) ++unreachable;
       if((du1 == 0. && du2 == 0.) || (dv1 == 0. && dv2 == 0.)) ++both_sides_;
       put(uv, v, Point_2(diffusion_ratio(du1, du2), diffusion_ratio(dv1, dv2)));

@@ -3,14 +3,14 @@
 #define DIFFUV_PARAMETERIZATION_PARAMETERIZE_DISC_H
 
 #include <diffuv/atlas/Uv_atlas.h>
-#include <diffuv/error.h>
+#include <diffuv/core/error.h>
 #include <diffuv/graph/edge_length_map.h>
 #include <diffuv/graph/heap_tags.h>
 #include <diffuv/parameterization/chart_rectangle.h>
 #include <diffuv/parameterization/diffusion_coordinates.h>
 #include <diffuv/parameterization/repair_folds.h>
 #include <diffuv/patches/disc_topology.h>
-#include <diffuv/patches/four_sides.h>
+#include <diffuv/patches/corners.h>
 
 #include <boost/graph/graph_traits.hpp>
 
@@ -96,7 +96,7 @@ Status parameterize_disc(const TriangleMesh& tm,
   std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> chart_faces(faces(tm).begin(), faces(tm).end());
   const std::size_t chart = atlas.add_chart(std::move(chart_faces), std::move(chart_vertices), std::move(chart_uv));
   const auto size = stretch_optimal_rectangle(tm, atlas.chart(chart).faces, get(CGAL::vertex_point, tm),
-                                              atlas.chart_uv_map(chart), chart_size(four, get(CGAL::vertex_point, tm)));
+                                              atlas.chart_uv_map(chart), side_length_rectangle(four, get(CGAL::vertex_point, tm)));
   atlas.set_chart_size(chart, size[0], size[1]);
   if(sides) *sides = std::move(four);
   return Status();

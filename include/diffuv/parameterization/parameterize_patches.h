@@ -5,7 +5,7 @@
 #define DIFFUV_PARAMETERIZATION_PARAMETERIZE_PATCHES_H
 
 #include <diffuv/atlas/Uv_atlas.h>
-#include <diffuv/error.h>
+#include <diffuv/core/error.h>
 #include <diffuv/graph/edge_length_map.h>
 #include <diffuv/graph/heap_tags.h>
 #include <diffuv/parameterization/chart_rectangle.h>
@@ -180,7 +180,7 @@ std::vector<Patch_result<TriangleMesh>> parameterize_patches(const TriangleMesh&
     results[p].chart = atlas.add_chart(seg.patch_faces[p], std::move(charts[p].vertices), std::move(charts[p].uv));
     const std::size_t c = results[p].chart;
     const auto size = stretch_optimal_rectangle(tm, atlas.chart(c).faces, vpm, atlas.chart_uv_map(c),
-                                                chart_size(results[p].sides, vpm));
+                                                side_length_rectangle(results[p].sides, vpm));
     atlas.set_chart_size(c, size[0], size[1]);
     results[p].milliseconds +=
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();

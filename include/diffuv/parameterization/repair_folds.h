@@ -27,9 +27,10 @@
 #ifndef DIFFUV_PARAMETERIZATION_REPAIR_FOLDS_H
 #define DIFFUV_PARAMETERIZATION_REPAIR_FOLDS_H
 
-#include <diffuv/error.h>
-#include <diffuv/metrics/distortion.h>
-#include <diffuv/patches/four_sides.h>
+#include <diffuv/core/error.h>
+#include <diffuv/core/four_sides.h>
+#include <diffuv/internal/uv_triangle.h>
+#include <diffuv/parameterization/chart_rectangle.h>
 
 #include <CGAL/boost/graph/iterator.h>
 
@@ -82,7 +83,7 @@ template <class TriangleMesh>
 struct Repair_patch {
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
   std::vector<vertex_descriptor> vertex;       // by index
-  std::vector<std::uint8_t> side_mask;         // bit s set: on side s (u1, u2, v1, v2)
+  std::vector<std::uint8_t> side_mask;         // bit s set: on side s (in the order of `Side`)
   std::vector<std::array<std::size_t, 3>> triangle;
   std::vector<bool> forced;                    // all three vertices on one side
   std::vector<std::vector<std::size_t>> ring;  // neighbours of each vertex
@@ -137,9 +138,8 @@ Status repair_folds(const TriangleMesh& tm, VertexPointMap vpm,
     u[i] = CGAL::to_double(q.x());
     v[i] = CGAL::to_double(q.y());
   }
-  const std::array<const std::vector<vertex_descriptor>*, 4> side_of = {&sides.u1, &sides.u2, &sides.v1, &sides.v2};
-  for(std::size_t s = 0; s < 4; ++s)
-    for(vertex_descriptor vd : *side_of[s]) p.side_mask[get(index, vd)] |= static_cast<std::uint8_t>(1u << s);
+  for(Side s : all_sides)
+    for(vertex_descriptor vd : sides[s]) p.side_mask[get(index, vd)] |= static_cast<std::uint8_t>(1u << static_cast<int>(s));
 
   std::vector<std::vector<std::size_t>> faces_of(n);
   for(auto f : faces(tm)) {
@@ -237,8 +237,9 @@ Status repair_folds(const TriangleMesh& tm, VertexPointMap vpm,
   // Walking counter-clockwise, v1 has u increasing, u2 v increasing, v2 u
   // decreasing, u1 v decreasing: each side runs once along its edge of the square.
   struct Walk { const std::vector<vertex_descriptor>* side; bool along_u; bool increasing; std::uint8_t bit; };
-  const std::array<Walk, 4> walks = {Walk{&sides.v1, true, true, 4}, Walk{&sides.u2, false, true, 2},
-                                     Walk{&sides.v2, true, false, 8}, Walk{&sides.u1, false, false, 1}};
+  auto bit = [](Side s) { return static_cast<std::uint8_t>(1u << static_cast<int>(s)); };
+  const std::array<Walk, 4> walks = {Walk{&sides.v1, true, true, bit(Side::v1)}, Walk{&sides.u2, false, true, bit(Side::u2)},
+                                     Walk{&sides.v2, true, false, bit(Side::v2)}, Walk{&sides.u1, false, false, bit(Side::u1)}};
   auto side_arc_lengths = [&](const Walk& w) {
     const auto& side = *w.side;
     std::vector<double> arc(side.size(), 0.);
@@ -261,7 +262,7 @@ Status repair_folds(const TriangleMesh& tm, VertexPointMap vpm,
   const bool border_ok = std::all_of(walks.begin(), walks.end(), monotone);
   // How much the map bends each triangle's shape on the chart's rectangle
   // (sigma_max / sigma_min of its Jacobian; 0 for a triangle degenerate in 3D).
-  const std::array<double, 2> rectangle = chart_size(sides, vpm);
+  const std::array<double, 2> rectangle = side_length_rectangle(sides, vpm);
   auto bend = [&](const std::array<std::size_t, 3>& t) {
     const auto e1 = xyz[t[1]] - xyz[t[0]], e2 = xyz[t[2]] - xyz[t[0]];
     const double l1 = std::sqrt(CGAL::to_double(e1 * e1));

@@ -5,7 +5,7 @@
 #ifndef DIFFUV_PATCHES_DISC_TOPOLOGY_H
 #define DIFFUV_PATCHES_DISC_TOPOLOGY_H
 
-#include <diffuv/error.h>
+#include <diffuv/core/error.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>

@@ -11,7 +11,7 @@
 #ifndef DIFFUV_PATCHES_FLAT_FACES_H
 #define DIFFUV_PATCHES_FLAT_FACES_H
 
-#include <diffuv/patches/four_sides.h>
+#include <diffuv/patches/corners.h>
 #include <diffuv/patches/region_sides.h>
 #include <diffuv/patches/segmentation.h>
 
@@ -36,9 +36,8 @@ flat_faces(const TriangleMesh& tm, const Segmentation<TriangleMesh>& seg, std::s
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
   // Border vertex -> bit set of its sides, as a sorted vector (a patch's border is short).
   std::vector<std::pair<vertex_descriptor, std::uint8_t>> side_mask;
-  const std::array<const std::vector<vertex_descriptor>*, 4> side_of = {&sides.u1, &sides.u2, &sides.v1, &sides.v2};
-  for(std::size_t s = 0; s < 4; ++s)
-    for(vertex_descriptor v : *side_of[s]) side_mask.emplace_back(v, static_cast<std::uint8_t>(1u << s));
+  for(Side s : all_sides)
+    for(vertex_descriptor v : sides[s]) side_mask.emplace_back(v, static_cast<std::uint8_t>(1u << static_cast<int>(s)));
   std::sort(side_mask.begin(), side_mask.end());
   auto mask_of = [&](vertex_descriptor v) {
     std::uint8_t m = 0;

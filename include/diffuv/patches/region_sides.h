@@ -8,8 +8,8 @@
 #ifndef DIFFUV_PATCHES_REGION_SIDES_H
 #define DIFFUV_PATCHES_REGION_SIDES_H
 
-#include <diffuv/error.h>
-#include <diffuv/patches/four_sides.h>
+#include <diffuv/core/error.h>
+#include <diffuv/patches/corners.h>
 #include <diffuv/patches/segmentation.h>
 
 #include <algorithm>

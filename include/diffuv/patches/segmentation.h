@@ -7,7 +7,7 @@
 #ifndef DIFFUV_PATCHES_SEGMENTATION_H
 #define DIFFUV_PATCHES_SEGMENTATION_H
 
-#include <diffuv/error.h>
+#include <diffuv/core/error.h>
 #include <diffuv/graph/multi_source_dijkstra.h>
 #include <diffuv/internal/index_marks.h>
 
@@ -48,7 +48,7 @@ struct Segmentation {
   std::vector<std::vector<face_descriptor>> patch_faces;  ///< #P entries: the faces of each patch
   /// Empty, or #P entries: the four corners of each patch, counter-clockwise
   /// with (0,0) first, when they were chosen together with the patch (the
-  /// four-sided layout, patches/quad_layout.h). An entry of null vertices
+  /// four-sided layout, layout/quad_layout.h). An entry of null vertices
   /// (`boost::graph_traits<TriangleMesh>::null_vertex()`) leaves the corners
   /// to `region_sides()`.
   std::vector<std::array<vertex_descriptor, 4>> patch_corners;

@@ -22,9 +22,9 @@
 #ifndef DIFFUV_RENDER_RENDER_MESH_H
 #define DIFFUV_RENDER_RENDER_MESH_H
 
-#include <diffuv/error.h>
+#include <diffuv/core/error.h>
 #include <diffuv/io/atomic_file.h>
-#include <diffuv/io/write_texture.h>
+#include <diffuv/render/texture.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/number_utils.h>

@@ -1,11 +1,11 @@
 // diffuv: from a mesh (and perhaps region labels) to disc patches ready to map.
-#ifndef DIFFUV_PATCHES_DISC_PATCHES_H
-#define DIFFUV_PATCHES_DISC_PATCHES_H
+#ifndef DIFFUV_LAYOUT_DISC_PATCHES_H
+#define DIFFUV_LAYOUT_DISC_PATCHES_H
 
-#include <diffuv/error.h>
+#include <diffuv/core/error.h>
 #include <diffuv/patches/disc_topology.h>
 #include <diffuv/patches/flat_faces.h>
-#include <diffuv/patches/quad_layout.h>
+#include <diffuv/layout/quad_layout.h>
 #include <diffuv/patches/segmentation.h>
 #include <diffuv/patches/split_patches.h>
 
@@ -21,7 +21,7 @@ namespace diffuv {
 
 /// How `disc_patches()` makes patches where the labels (or their absence) leave it free.
 enum class Patch_layout {
-  quads,   ///< the four-sided layout (patches/quad_layout.h): conforming quads from Voronoi cells (default)
+  quads,   ///< the four-sided layout (layout/quad_layout.h): conforming quads from Voronoi cells (default)
   voronoi  ///< Voronoi cells refined until discs, their runs of neighbours merged into four sides (diffuv 0.1)
 };
 
@@ -276,4 +276,4 @@ Status disc_patches(const TriangleMesh& tm, std::vector<int> face_labels, Vertex
 
 } // namespace diffuv
 
-#endif // DIFFUV_PATCHES_DISC_PATCHES_H
+#endif // DIFFUV_LAYOUT_DISC_PATCHES_H

@@ -5,12 +5,12 @@
 // each chart. This writer emits one `vt` per distinct (vertex, uv) pair and
 // `f v/vt ...` faces, keeping the vertices in the order of the mesh so that
 // vertex i of the OBJ file is vertex i of the input mesh.
-#ifndef DIFFUV_IO_WRITE_OBJ_H
-#define DIFFUV_IO_WRITE_OBJ_H
+#ifndef DIFFUV_OUTPUT_WRITE_OBJ_H
+#define DIFFUV_OUTPUT_WRITE_OBJ_H
 
-#include <diffuv/error.h>
+#include <diffuv/core/error.h>
 #include <diffuv/io/atomic_file.h>
-#include <diffuv/io/number_format.h>
+#include <diffuv/internal/number_format.h>
 
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/number_utils.h>
@@ -171,6 +171,42 @@ void write_obj(const std::string& path, const TriangleMesh& tm, VertexPointMap v
   file.commit();
 }
 
+/// Writes an OBJ material library (MTL) with one material `material` whose
+/// diffuse colour is the image `texture_file`:
+/// `newmtl`, `Ka 1 1 1`, `Kd 1 1 1` (the texture is not darkened), `Ks 0 0 0`,
+/// `d 1`, `illum 1`, `map_Kd <texture_file>`.
+///
+/// \param out the stream to write to
+/// \param material the material's name, as given to `write_obj()`; no white space
+/// \param texture_file the image, usually relative to the MTL file's folder; no line break
+/// \throws std::invalid_argument if `material` is empty or has white space, or
+///         `texture_file` is empty or has a line break
+inline void write_mtl(std::ostream& out, const std::string& material, const std::string& texture_file)
+{
+  if(material.empty() || material.find_first_of(" \t\r\n\f\v") != std::string::npos)
+    throw std::invalid_argument("write_mtl: the material name must be one word: \"" + material + "\"");
+  if(texture_file.empty() || texture_file.find_first_of("\r\n") != std::string::npos)
+    throw std::invalid_argument("write_mtl: the texture file name must be one line");
+  out << "# written by diffuv\n"
+      << "newmtl " << material << '\n'
+      << "Ka 1 1 1\n"
+      << "Kd 1 1 1\n"
+      << "Ks 0 0 0\n"
+      << "d 1\n"
+      << "illum 1\n"
+      << "map_Kd " << texture_file << '\n';
+}
+
+/// Same as above, into the file `path`, through `Atomic_output_file`.
+/// \throws std::invalid_argument as above (nothing is written)
+/// \throws Output_error naming `path` if the file cannot be created or written
+inline void write_mtl(const std::string& path, const std::string& material, const std::string& texture_file)
+{
+  Atomic_output_file file(path);
+  write_mtl(file.stream(), material, texture_file);
+  file.commit();
+}
+
 } // namespace diffuv
 
-#endif // DIFFUV_IO_WRITE_OBJ_H
+#endif // DIFFUV_OUTPUT_WRITE_OBJ_H

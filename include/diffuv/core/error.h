@@ -4,8 +4,8 @@
 // vertex or side) and never print. Readers and writers throw Input_error /
 // Output_error, which carry the file, the line and the reason. Only a
 // program's main() writes to the terminal.
-#ifndef DIFFUV_ERROR_H
-#define DIFFUV_ERROR_H
+#ifndef DIFFUV_CORE_ERROR_H
+#define DIFFUV_CORE_ERROR_H
 
 #include <cstddef>
 #include <stdexcept>
@@ -157,4 +157,4 @@ inline void drop_byte_order_mark(std::string& line)
 
 } // namespace diffuv
 
-#endif // DIFFUV_ERROR_H
+#endif // DIFFUV_CORE_ERROR_H

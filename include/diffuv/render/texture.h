@@ -1,20 +1,20 @@
-// diffuv: a generated checkerboard texture, written as PNG, and the OBJ
-// material (MTL) that puts it on a mesh.
+// diffuv: a generated checkerboard texture, and PNG files.
 //
 // A checkerboard on the unit square is the usual way to look at a
 // parameterization: stretched, sheared or folded cells show where the map
 // distorts. `write_obj(path, ..., "mesh.mtl", "checker")`, `write_mtl(...,
-// "checker", "checker.png")` and `write_png_file("checker.png", ...)` give a
-// textured OBJ that any viewer (MeshLab, Blender) opens.
+// "checker", "checker.png")` (output/write_obj.h) and
+// `write_png_file("checker.png", ...)` give a textured OBJ that any viewer
+// (MeshLab, Blender) opens.
 //
 // PNG encoding uses stb_image_write (Debian package libstb-dev), compiled into
 // every translation unit that includes this header as static functions, so
 // that no separate implementation file is needed and two headers of diffuv
 // using it (see render/) can share one copy through the same guard.
-#ifndef DIFFUV_IO_WRITE_TEXTURE_H
-#define DIFFUV_IO_WRITE_TEXTURE_H
+#ifndef DIFFUV_RENDER_TEXTURE_H
+#define DIFFUV_RENDER_TEXTURE_H
 
-#include <diffuv/error.h>
+#include <diffuv/core/error.h>
 #include <diffuv/io/atomic_file.h>
 
 #ifndef DIFFUV_STB_IMAGE_WRITE_INCLUDED
@@ -152,42 +152,6 @@ inline void write_png_file(const std::string& path, int width, int height, const
   file.commit();
 }
 
-/// Writes an OBJ material library (MTL) with one material `material` whose
-/// diffuse colour is the image `texture_file`:
-/// `newmtl`, `Ka 1 1 1`, `Kd 1 1 1` (the texture is not darkened), `Ks 0 0 0`,
-/// `d 1`, `illum 1`, `map_Kd <texture_file>`.
-///
-/// \param out the stream to write to
-/// \param material the material's name, as given to `write_obj()`; no white space
-/// \param texture_file the image, usually relative to the MTL file's folder; no line break
-/// \throws std::invalid_argument if `material` is empty or has white space, or
-///         `texture_file` is empty or has a line break
-inline void write_mtl(std::ostream& out, const std::string& material, const std::string& texture_file)
-{
-  if(material.empty() || material.find_first_of(" \t\r\n\f\v") != std::string::npos)
-    throw std::invalid_argument("write_mtl: the material name must be one word: \"" + material + "\"");
-  if(texture_file.empty() || texture_file.find_first_of("\r\n") != std::string::npos)
-    throw std::invalid_argument("write_mtl: the texture file name must be one line");
-  out << "# written by diffuv\n"
-      << "newmtl " << material << '\n'
-      << "Ka 1 1 1\n"
-      << "Kd 1 1 1\n"
-      << "Ks 0 0 0\n"
-      << "d 1\n"
-      << "illum 1\n"
-      << "map_Kd " << texture_file << '\n';
-}
-
-/// Same as above, into the file `path`, through `Atomic_output_file`.
-/// \throws std::invalid_argument as above (nothing is written)
-/// \throws Output_error naming `path` if the file cannot be created or written
-inline void write_mtl(const std::string& path, const std::string& material, const std::string& texture_file)
-{
-  Atomic_output_file file(path);
-  write_mtl(file.stream(), material, texture_file);
-  file.commit();
-}
-
 } // namespace diffuv
 
-#endif // DIFFUV_IO_WRITE_TEXTURE_H
+#endif // DIFFUV_RENDER_TEXTURE_H

@@ -2,7 +2,7 @@
 // from one centre vertex to given vertices of its border.
 //
 // This is the operation the four-sided layout is built from
-// (patches/quad_layout.h): a cell is fanned from its centre to the midpoints
+// (layout/quad_layout.h): a cell is fanned from its centre to the midpoints
 // of its arcs, then the region around each junction is fanned from its own
 // centre to the midpoints on its border. Each cut follows the straight
 // segment from the centre to its target in a mean value flattening of the
@@ -10,8 +10,8 @@
 // to an edge path; the cuts are vertex-disjoint but for the centre and have no
 // chord (an edge between two of their vertices that are not consecutive), so
 // no triangle of a sector has its three vertices on one cut.
-#ifndef DIFFUV_PATCHES_FAN_SPLIT_H
-#define DIFFUV_PATCHES_FAN_SPLIT_H
+#ifndef DIFFUV_LAYOUT_FAN_SPLIT_H
+#define DIFFUV_LAYOUT_FAN_SPLIT_H
 
 #include <diffuv/internal/index_list_hash.h>
 
@@ -615,4 +615,4 @@ private:
 } // namespace internal
 } // namespace diffuv
 
-#endif // DIFFUV_PATCHES_FAN_SPLIT_H
+#endif // DIFFUV_LAYOUT_FAN_SPLIT_H

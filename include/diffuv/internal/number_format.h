@@ -1,6 +1,6 @@
 // diffuv: numbers written so that they read back exactly, and no longer than that.
-#ifndef DIFFUV_IO_NUMBER_FORMAT_H
-#define DIFFUV_IO_NUMBER_FORMAT_H
+#ifndef DIFFUV_INTERNAL_NUMBER_FORMAT_H
+#define DIFFUV_INTERNAL_NUMBER_FORMAT_H
 
 #include <charconv>
 #include <ostream>
@@ -20,4 +20,4 @@ inline void write_shortest(std::ostream& out, double x)
 } // namespace internal
 } // namespace diffuv
 
-#endif // DIFFUV_IO_NUMBER_FORMAT_H
+#endif // DIFFUV_INTERNAL_NUMBER_FORMAT_H

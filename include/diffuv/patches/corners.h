@@ -1,24 +1,10 @@
-// diffuv: the boundary loop of a disc patch cut into four sides.
-//
-// The paper (section 2.7) needs four "edges" E_u1, E_v1, E_u2, E_v2 of each
-// patch, like the sides of a rectangle, as source sets of the diffusion.
-// Convention (counter-clockwise, so that charts are not mirrored):
-//
-//       corners[3] ---- v2 (v = 1) ---- corners[2]
-//           |                               |
-//       u1 (u = 0)                      u2 (u = 1)
-//           |                               |
-//       corners[0] ---- v1 (v = 0) ---- corners[1]
-//
-// corners[0] goes to (0,0), corners[1] to (1,0), corners[2] to (1,1),
-// corners[3] to (0,1), and they follow each other along the boundary in the
-// direction of the faces' orientation (counter-clockwise seen from the side
-// the face normals point to). Each side includes both its corners, so a
-// corner belongs to the two sides that meet there.
-#ifndef DIFFUV_PATCHES_FOUR_SIDES_H
-#define DIFFUV_PATCHES_FOUR_SIDES_H
+// diffuv: choosing a patch's four corners on its boundary loop, and cutting
+// the loop into the four sides there (core/four_sides.h has the convention).
+#ifndef DIFFUV_PATCHES_CORNERS_H
+#define DIFFUV_PATCHES_CORNERS_H
 
-#include <diffuv/error.h>
+#include <diffuv/core/error.h>
+#include <diffuv/core/four_sides.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -38,15 +24,6 @@
 
 namespace diffuv {
 
-/// The four sides of a disc patch, each a polyline of boundary vertices.
-template <class VertexDescriptor>
-struct Four_sides {
-  std::array<VertexDescriptor, 4> corners; ///< (0,0), (1,0), (1,1), (0,1), counter-clockwise
-  std::vector<VertexDescriptor> v1;        ///< corners[0] .. corners[1], where v = 0
-  std::vector<VertexDescriptor> u2;        ///< corners[1] .. corners[2], where u = 1
-  std::vector<VertexDescriptor> v2;        ///< corners[2] .. corners[3], where v = 1
-  std::vector<VertexDescriptor> u1;        ///< corners[3] .. corners[0], where u = 0
-};
 
 /// Returns the vertices of the boundary loop that contains the border halfedge
 /// `border`, counter-clockwise around the patch (in the direction of the faces'
@@ -115,27 +92,6 @@ Status sides_from_corners(const std::vector<VertexDescriptor>& loop, const std::
   sides.v2 = arc(2, 3);
   sides.u1 = arc(3, 0);
   return Status();
-}
-
-/// The natural size of a patch's chart: the mean 3D length of its sides v1
-/// and v2 (along u) and of u1 and u2 (along v), scaled so that the larger is 1.
-/// A texture drawn on the rectangle (width, height) is then not stretched
-/// across the patch, where the unit square would stretch a long patch.
-///
-/// \returns {1, 1} if a pair of sides has no length
-template <class VertexDescriptor, class VertexPointMap>
-std::array<double, 2> chart_size(const Four_sides<VertexDescriptor>& sides, VertexPointMap vpm)
-{
-  auto length = [&](const std::vector<VertexDescriptor>& side) {
-    double sum = 0;
-    for(std::size_t i = 0; i + 1 < side.size(); ++i)
-      sum += std::sqrt(CGAL::to_double(CGAL::squared_distance(get(vpm, side[i]), get(vpm, side[i + 1]))));
-    return sum;
-  };
-  const double width = (length(sides.v1) + length(sides.v2)) / 2, height = (length(sides.u1) + length(sides.u2)) / 2;
-  if(!(width > 0 && height > 0 && std::isfinite(width) && std::isfinite(height))) return {1., 1.};
-  const double larger = std::max(width, height);
-  return {width / larger, height / larger};
 }
 
 /// Chooses four corners on a boundary loop automatically: the first is the
@@ -453,4 +409,4 @@ std::size_t separate_flat_triangles(const FaceGraph& g,
 
 } // namespace diffuv
 
-#endif // DIFFUV_PATCHES_FOUR_SIDES_H
+#endif // DIFFUV_PATCHES_CORNERS_H

@@ -10,14 +10,14 @@
 // the same double (number_format.h), inside a group whose transform flips the
 // y axis (SVG's y points down, v points up). So the `points` of a polygon are
 // the exact (u,v) of its corners, and a zoomed viewer shows slivers as they are.
-#ifndef DIFFUV_IO_WRITE_SVG_H
-#define DIFFUV_IO_WRITE_SVG_H
+#ifndef DIFFUV_OUTPUT_WRITE_SVG_H
+#define DIFFUV_OUTPUT_WRITE_SVG_H
 
 #include <diffuv/atlas/Uv_atlas.h>
-#include <diffuv/error.h>
+#include <diffuv/core/error.h>
 #include <diffuv/io/atomic_file.h>
-#include <diffuv/io/number_format.h>
-#include <diffuv/patches/four_sides.h>
+#include <diffuv/internal/number_format.h>
+#include <diffuv/core/four_sides.h>
 
 #include <CGAL/number_utils.h>
 
@@ -42,8 +42,8 @@ struct Uv_layout_colours {
   static constexpr const char* flipped = "#e02020";    ///< fill of a flipped face (red)
   static constexpr const char* degenerate = "#ff9900"; ///< fill and stroke of a degenerate face (orange)
   static constexpr const char* square = "#000000";     ///< the unit square's outline
-  /// The sides u1 (u = 0), u2 (u = 1), v1 (v = 0), v2 (v = 1), in this order.
-  static constexpr std::array<const char*, 4> sides = {"#1f77b4", "#2ca02c", "#9467bd", "#17becf"};
+  /// The sides v1 (v = 0), u2 (u = 1), v2 (v = 1), u1 (u = 0): in the order of `Side`.
+  static constexpr std::array<const char*, 4> sides = {"#9467bd", "#2ca02c", "#17becf", "#1f77b4"};
 };
 
 namespace internal {
@@ -207,19 +207,16 @@ void write_uv_layout_svg(std::ostream& out, const Uv_atlas<TriangleMesh, Kernel>
   write_svg_number(out, 1.5 * px);
   out << "\"/>\n";
 
-  static const char* const side_names[4] = {"u1", "u2", "v1", "v2"};
   if(sides) {
     const auto uv_map = atlas.chart_uv_map(chart);
-    const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>* lists[4] = {
-        &sides->u1, &sides->u2, &sides->v1, &sides->v2};
     out << "<g id=\"sides\" fill=\"none\" stroke-width=\"";
     write_svg_number(out, 4 * px);
     out << "\" stroke-opacity=\"0.85\">\n";
-    for(int s = 0; s < 4; ++s) {
-      out << "<polyline class=\"side_" << side_names[s] << "\" stroke=\"" << Uv_layout_colours::sides[s]
+    for(Side s : all_sides) {
+      out << "<polyline class=\"side_" << side_name(s) << "\" stroke=\"" << Uv_layout_colours::sides[static_cast<std::size_t>(s)]
           << "\" points=\"";
       bool first = true;
-      for(const auto& v : *lists[s]) {
+      for(const auto& v : (*sides)[s]) {
         const auto p = get(uv_map, v);
         const double u = CGAL::to_double(p.x()), vv = CGAL::to_double(p.y());
         if(!std::isfinite(u) || !std::isfinite(vv)) continue; // not in this chart
@@ -247,7 +244,7 @@ void write_uv_layout_svg(std::ostream& out, const Uv_atlas<TriangleMesh, Kernel>
       << degenerate << " degenerate</text>\n";
   if(sides) {
     text_y += 1.2 * font;
-    static const char* const side_labels[4] = {"u1 (u = 0)", "u2 (u = 1)", "v1 (v = 0)", "v2 (v = 1)"};
+    static const char* const side_labels[4] = {"v1 (v = 0)", "u2 (u = 1)", "v2 (v = 1)", "u1 (u = 0)"};
     for(int s = 0; s < 4; ++s) {
       out << "<text x=\"";
       write_svg_number(out, text_x + s * 0.25 * (umax - umin));
@@ -276,4 +273,4 @@ void write_uv_layout_svg(const std::string& path, const Uv_atlas<TriangleMesh, K
 
 } // namespace diffuv
 
-#endif // DIFFUV_IO_WRITE_SVG_H
+#endif // DIFFUV_OUTPUT_WRITE_SVG_H

@@ -1,10 +1,10 @@
 // diffuv: the uv-map as a per-vertex table (CSV).
-#ifndef DIFFUV_IO_WRITE_UV_TABLE_H
-#define DIFFUV_IO_WRITE_UV_TABLE_H
+#ifndef DIFFUV_OUTPUT_WRITE_UV_TABLE_H
+#define DIFFUV_OUTPUT_WRITE_UV_TABLE_H
 
 #include <diffuv/atlas/Uv_atlas.h>
 #include <diffuv/io/atomic_file.h>
-#include <diffuv/io/number_format.h>
+#include <diffuv/internal/number_format.h>
 
 #include <iomanip>
 #include <string>
@@ -48,4 +48,4 @@ void write_uv_table(const std::string& path, const Uv_atlas<TriangleMesh, Kernel
 
 } // namespace diffuv
 
-#endif // DIFFUV_IO_WRITE_UV_TABLE_H
+#endif // DIFFUV_OUTPUT_WRITE_UV_TABLE_H

@@ -1,13 +1,13 @@
 // diffuv: graph-Voronoi cells of a set of faces, with seeds placed by
 // farthest-point sampling and relaxed (Lloyd-like) so that cells are round.
 //
-// The cells are the first step of the four-sided layout (patches/quad_layout.h):
+// The cells are the first step of the four-sided layout (layout/quad_layout.h):
 // each cell is later split into quads through its centre and the midpoints
 // of its arcs. Distances run on the dual graph (faces joined across edges,
 // weighted by the distance between their centroids), so every rule here
 // depends on the surface only, not on vertex or face numbering.
-#ifndef DIFFUV_PATCHES_VORONOI_CELLS_H
-#define DIFFUV_PATCHES_VORONOI_CELLS_H
+#ifndef DIFFUV_LAYOUT_VORONOI_CELLS_H
+#define DIFFUV_LAYOUT_VORONOI_CELLS_H
 
 #include <diffuv/graph/multi_source_dijkstra.h>
 #include <diffuv/patches/segmentation.h>
@@ -258,4 +258,4 @@ private:
 
 } // namespace diffuv
 
-#endif // DIFFUV_PATCHES_VORONOI_CELLS_H
+#endif // DIFFUV_LAYOUT_VORONOI_CELLS_H

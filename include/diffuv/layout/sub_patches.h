@@ -17,11 +17,11 @@
 //   vertices by their points;
 // - sectors are numbered from the run that starts the smallest rotation of
 //   the neighbours' (label, part) sequence, so two meshes number them alike.
-#ifndef DIFFUV_PATCHES_SUB_PATCHES_H
-#define DIFFUV_PATCHES_SUB_PATCHES_H
+#ifndef DIFFUV_LAYOUT_SUB_PATCHES_H
+#define DIFFUV_LAYOUT_SUB_PATCHES_H
 
-#include <diffuv/patches/fan_split.h>
-#include <diffuv/patches/four_sides.h>
+#include <diffuv/layout/fan_split.h>
+#include <diffuv/patches/corners.h>
 #include <diffuv/patches/region_sides.h>
 #include <diffuv/patches/segmentation.h>
 
@@ -366,4 +366,4 @@ Sub_patch_report split_regions_into_quads(const TriangleMesh& tm, Segmentation<T
 
 } // namespace diffuv
 
-#endif // DIFFUV_PATCHES_SUB_PATCHES_H
+#endif // DIFFUV_LAYOUT_SUB_PATCHES_H

@@ -5,11 +5,11 @@
 // and collapses where the four sides all lie around one end of a tube. This
 // header builds such patches from a cell complex:
 //
-//   Voronoi cells (patches/voronoi_cells.h: farthest-point seeds, relaxed)
+//   Voronoi cells (layout/voronoi_cells.h: farthest-point seeds, relaxed)
 //     -> arcs between junctions, a midpoint on each (where the two cells'
 //        centres are nearest each other across it), short arcs collapsed
 //     -> each cell fanned from its centre to the midpoints of its arcs
-//        (patches/fan_split.h): its sectors each hold a junction
+//        (layout/fan_split.h): its sectors each hold a junction
 //     -> the sectors holding one junction form a dual region (a triangle of
 //        the dual of the cells, or a quadrilateral where an arc collapsed),
 //        fanned from its own centre to the midpoints on its border
@@ -22,15 +22,15 @@
 // Where a fan cannot be made (a cell too small for its arcs, a region that is
 // not a disc), its faces become ordinary patches whose corners come from their
 // neighbours (`region_sides()`), and the report counts them.
-#ifndef DIFFUV_PATCHES_QUAD_LAYOUT_H
-#define DIFFUV_PATCHES_QUAD_LAYOUT_H
+#ifndef DIFFUV_LAYOUT_QUAD_LAYOUT_H
+#define DIFFUV_LAYOUT_QUAD_LAYOUT_H
 
-#include <diffuv/error.h>
-#include <diffuv/patches/fan_split.h>
-#include <diffuv/patches/four_sides.h>
+#include <diffuv/core/error.h>
+#include <diffuv/layout/fan_split.h>
+#include <diffuv/patches/corners.h>
 #include <diffuv/patches/segmentation.h>
 #include <diffuv/patches/split_patches.h>
-#include <diffuv/patches/voronoi_cells.h>
+#include <diffuv/layout/voronoi_cells.h>
 
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
@@ -1203,4 +1203,4 @@ Status quad_layout(const TriangleMesh& tm, const std::vector<int>& face_labels, 
 
 } // namespace diffuv
 
-#endif // DIFFUV_PATCHES_QUAD_LAYOUT_H
+#endif // DIFFUV_LAYOUT_QUAD_LAYOUT_H

@@ -20,7 +20,7 @@
 // charts are therefore mirrored. Starting the walk at `corners[0]` and
 // swapping u and v afterwards (an exact reflection) puts `corners[i]` exactly
 // where diffuv puts it, with the same (counter-clockwise) orientation; see
-// `diffuv/patches/four_sides.h`. LSCM and ARAP are not mirrored and their uv
+// `diffuv/patches/corners.h`. LSCM and ARAP are not mirrored and their uv
 // is left as CGAL returns it (not in the unit square: compare them with
 // scale-normalised measures such as `measure_distortion()`).
 //
