@@ -596,13 +596,15 @@ diffuv::Status build_atlas(const Mesh& m, const std::vector<int>& labels, Labell
   diffuv::Labelled_atlas_options options;
   if(repair_choice >= 0) options.repair.enabled = repair_choice == 1;
   options.sub_patches = sub_patches_choice;
+  auto build = [&](auto tag) {
+    using Tag = decltype(tag);
+    return follow ? diffuv::build_labelled_atlas<Tag>(m, m.points(), labels, *follow, out, options)
+                  : diffuv::build_labelled_atlas<Tag>(m, m.points(), labels, out, options);
+  };
   switch(distance) {
-  case Distance::fmm:
-    return diffuv::build_labelled_atlas(m, m.points(), labels, out, options, diffuv::Fmm_distance_tag(), follow);
-  case Distance::graph:
-    return diffuv::build_labelled_atlas(m, m.points(), labels, out, options, diffuv::Graph_distance_tag(), follow);
-  case Distance::exact:
-    return diffuv::build_labelled_atlas(m, m.points(), labels, out, options, diffuv::Exact_distance_tag(), follow);
+  case Distance::fmm: return build(diffuv::Fmm_distance_tag());
+  case Distance::graph: return build(diffuv::Graph_distance_tag());
+  case Distance::exact: return build(diffuv::Exact_distance_tag());
   }
   return diffuv::Status();
 }
@@ -1164,7 +1166,7 @@ int run(const Options& o)
     diffuv::Patching_report report;
     diffuv::Patching_options patching;
     if(o.labels == "voronoi") patching.layout = diffuv::Patch_layout::voronoi;
-    diffuv::disc_patches(a.mesh, std::vector<int>{}, a.mesh.points(), seg, patching, &report);
+    diffuv::disc_patches(a.mesh, a.mesh.points(), std::vector<int>{}, seg, patching, &report);
     a.labels.assign(a.mesh.number_of_faces(), 0);
     for(auto f : a.mesh.faces()) a.labels[f.idx()] = static_cast<int>(seg.face_patch[f.idx()]);
     a.automatic_patches = seg.number_of_patches();

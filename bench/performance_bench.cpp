@@ -340,7 +340,7 @@ Case make_case(const std::string& name_or_path, int level)
   diffuv::read_triangle_mesh(path, c.mesh);
   // The given patches of the base mesh: automatic (closed meshes) or the whole disc.
   Seg base;
-  const diffuv::Status status = diffuv::disc_patches(c.mesh, std::vector<int>{}, c.mesh.points(), base);
+  const diffuv::Status status = diffuv::disc_patches(c.mesh, c.mesh.points(), std::vector<int>{}, base);
   if(!status) throw std::runtime_error(c.name + ": disc_patches: " + status.what());
   if(level == 0) {
     c.seg = std::move(base);
@@ -349,7 +349,7 @@ Case make_case(const std::string& name_or_path, int level)
     std::vector<int> labels(c.mesh.number_of_faces());
     for(auto f : c.mesh.faces()) labels[f.idx()] = static_cast<int>(base.face_patch[f.idx()]);
     for(int l = 0; l < level; ++l) labels = loop_subdivide(c.mesh, labels);
-    c.seg = diffuv::patches_from_labels(c.mesh, labels, c.mesh.points());
+    c.seg = diffuv::patches_from_labels(c.mesh, c.mesh.points(), labels);
     if(c.seg.number_of_patches() != base.number_of_patches())
       throw std::runtime_error(c.name + ": the subdivided patches differ in number from the parent's");
     c.labels_from = "parent patches";
@@ -359,7 +359,7 @@ Case make_case(const std::string& name_or_path, int level)
   c.patch_ok.assign(P, false);
   for(std::size_t p = 0; p < P; ++p) {
     diffuv::Status s = diffuv::check_patch_disc(c.mesh, c.seg, p);
-    if(s) s = diffuv::region_sides(c.mesh, c.seg, p, c.mesh.points(), c.sides[p]);
+    if(s) s = diffuv::region_sides(c.mesh, c.mesh.points(), c.seg, p, c.sides[p]);
     c.patch_ok[p] = static_cast<bool>(s);
     if(c.patch_ok[p] && (!c.patch_ok[c.largest_patch] ||
                          c.seg.patch_faces[p].size() > c.seg.patch_faces[c.largest_patch].size()))
@@ -385,8 +385,7 @@ Pipeline_run run_pipeline(const Case& c, bool repair, std::size_t threads = 1)
   Pipeline_run r;
   const auto t0 = Clock::now();
   r.atlas = std::make_unique<Atlas>(c.mesh);
-  const auto results = diffuv::parameterize_patches(c.mesh, c.seg, c.mesh.points(), *r.atlas, DistanceTag(),
-                                                    HeapTag(), diffuv::Repair_options{repair}, nullptr, true, threads);
+  const auto results = diffuv::parameterize_patches<DistanceTag, HeapTag>(c.mesh, c.mesh.points(), c.seg, *r.atlas, diffuv::Patch_parameterization_options{diffuv::Repair_options{repair}, nullptr, true, threads});
   r.ms = ms_since(t0);
   for(const auto& p : results) {
     if(!p.status) ++r.failed;
@@ -438,7 +437,7 @@ Stages staged_pipeline(const Case& c, bool repair)
     diffuv::Patch_result<Mesh> r;
     r.status = diffuv::check_patch_disc(m, c.seg, p);
     lap(s.disc_check);
-    if(r.status) r.status = diffuv::region_sides(m, c.seg, p, m.points(), r.sides, &r.side_report, nullptr, true);
+    if(r.status) r.status = diffuv::region_sides(m, m.points(), c.seg, p, r.sides, {}, &r.side_report);
     lap(s.sides);
     if(!r.status) continue;
     if(std::is_same_v<DistanceTag, diffuv::Graph_distance_tag> && !repair) {
@@ -450,7 +449,7 @@ Stages staged_pipeline(const Case& c, bool repair)
       const auto ls = pgraph.local_sides(m, r.sides);
       lap(s.ffg);
       std::vector<Point_2> uv(pgraph.number_of_vertices());
-      diffuv::Diffusion_coordinates<diffuv::Patch_graph<Mesh>::Graph, Heap, diffuv::Graph_distance_tag> coordinates(
+      diffuv::Diffusion_coordinates<diffuv::Patch_graph<Mesh>::Graph, diffuv::Graph_distance_tag, Heap> coordinates(
           pgraph.graph());
       lap(s.engine);
       r.status = coordinates.compute(ls, pgraph.length_map(),
@@ -465,13 +464,13 @@ Stages staged_pipeline(const Case& c, bool repair)
     auto pindex = get(boost::vertex_index, patch);
     lap(s.ffg);
     std::vector<Point_2> uv(num_vertices(patch));
-    diffuv::Diffusion_coordinates<Patch, Heap, DistanceTag> coordinates(patch);
+    diffuv::Diffusion_coordinates<Patch, DistanceTag, Heap> coordinates(patch);
     lap(s.engine);
     r.status = coordinates.compute(r.sides, lengths, boost::make_iterator_property_map(uv.begin(), pindex));
     lap(s.distances);
     if(!r.status) continue;
-    diffuv::repair_folds(patch, m.points(), r.sides, boost::make_iterator_property_map(uv.begin(), pindex), &r.repair,
-                         diffuv::Repair_options{repair});
+    diffuv::repair_folds(patch, m.points(), r.sides, boost::make_iterator_property_map(uv.begin(), pindex), diffuv::Repair_options{repair},
+                         &r.repair);
     lap(s.repair);
     std::vector<vertex_descriptor> chart_vertices(num_vertices(patch));
     for(vertex_descriptor v : vertices(patch)) chart_vertices[get(pindex, v)] = v;
@@ -800,7 +799,7 @@ Row run_worker(const Options& o, const std::string& mesh, int level)
     for(int r = 0; r < auto_runs; ++r) {
       Seg seg;
       const auto t0 = Clock::now();
-      diffuv::disc_patches(m, std::vector<int>{}, m.points(), seg);
+      diffuv::disc_patches(m, m.points(), std::vector<int>{}, seg);
       times.push_back(ms_since(t0));
       patches = seg.number_of_patches();
     }
@@ -1048,7 +1047,7 @@ int perf_loop(const Options& o)
     if(o.perf_loop == "auto") {
       Seg seg;
       const auto t0 = Clock::now();
-      diffuv::disc_patches(c.mesh, std::vector<int>{}, c.mesh.points(), seg);
+      diffuv::disc_patches(c.mesh, c.mesh.points(), std::vector<int>{}, seg);
       times.push_back(ms_since(t0));
     } else {
       times.push_back(o.perf_loop == "paper" ? run_pipeline<diffuv::Graph_distance_tag>(c, false).ms

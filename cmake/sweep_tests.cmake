@@ -18,7 +18,7 @@ set(diffuv_sweep_not_injective
   blobby_3cc.off           # a whole disc component with more ears than corners, no neighbour to take one
   boeing.off               # CAD strips: fallback patches with more ears than corners
   cheese.off               # the same, around its holes
-  couplingdown.off         # CAD strips: two fallback patches of 11 and 13 runs with no interior path between junctions, one flat face each that no hand-off takes (one-to-one before the cuts between junctions)
+  couplingdown.off         # CAD strips: two fallback patches of 11 and 13 runs with no interior path between junctions, one flat triangle each that no hand-off takes (one-to-one before the cuts between junctions)
   elephant-with-holes.off  # as cheese: strips around its holes
   mech-holes-shark.off     # CAD strips around holes
 )

@@ -43,7 +43,7 @@ int main(int argc, char** argv)
     return EXIT_FAILURE;
   }
 
-  const diffuv::Distortion_summary d = diffuv::measure_distortion(mesh, faces(mesh), mesh.points(), uv);
+  const diffuv::Distortion_summary d = diffuv::measure_distortion(mesh, mesh.points(), faces(mesh), uv);
   std::cout << file << ": " << num_vertices(mesh) << " vertices mapped onto the unit square\n"
             << "flipped " << d.flipped << ", overlapping pairs " << d.overlapping_pairs << ", angle distortion mean "
             << d.angle_mean << " (1 = conformal), area distortion mean " << d.area_mean << std::endl;

@@ -47,7 +47,7 @@ int main(int argc, char** argv)
 
   // A's regions: automatic disc patches, as `diffuv segment` writes them.
   diffuv::Segmentation<Mesh> seg;
-  const diffuv::Status segmented = diffuv::disc_patches(a, std::vector<int>(), a.points(), seg);
+  const diffuv::Status segmented = diffuv::disc_patches(a, a.points(), std::vector<int>(), seg);
   if(!segmented) {
     std::cerr << "Error: " << segmented.what() << std::endl;
     return EXIT_FAILURE;
@@ -74,8 +74,7 @@ int main(int argc, char** argv)
     return EXIT_FAILURE;
   }
   const auto follow_a = diffuv::atlas_to_follow(atlas_a);
-  status = diffuv::build_labelled_atlas(b, b.points(), labels_b, atlas_b, {}, diffuv::Default_distance_tag(),
-                                        &follow_a);
+  status = diffuv::build_labelled_atlas(b, b.points(), labels_b, follow_a, atlas_b);
   if(!status) {
     std::cerr << "Error: mesh B: " << status.what() << std::endl;
     return EXIT_FAILURE;

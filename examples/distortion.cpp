@@ -25,7 +25,7 @@ int main(int argc, char** argv)
     return EXIT_FAILURE;
   }
   diffuv::Uv_atlas<Mesh> atlas(mesh);
-  const diffuv::Status status = diffuv::parameterize_disc(mesh, {}, atlas);
+  const diffuv::Status status = diffuv::parameterize_disc(mesh, mesh.points(), {}, atlas);
   if(!status) {
     std::cerr << "Error: " << status.what() << std::endl;
     return EXIT_FAILURE;
@@ -33,7 +33,7 @@ int main(int argc, char** argv)
 
   std::vector<diffuv::Triangle_distortion> per_face;
   const diffuv::Distortion_summary d =
-      diffuv::measure_distortion(mesh, faces(mesh), mesh.points(), atlas.chart_uv_map(0), &per_face);
+      diffuv::measure_distortion(mesh, mesh.points(), faces(mesh), atlas.chart_uv_map(0), &per_face);
 
   std::cout << file << ": " << d.faces << " faces\n"
             << "  flipped " << d.flipped << ", degenerate " << d.degenerate << ", overlapping pairs "

@@ -36,7 +36,9 @@ int main(int argc, char** argv)
   // corners[0] goes to (0,0); the others follow counter-clockwise along the border.
   diffuv::Uv_atlas<Mesh> atlas(mesh);
   diffuv::Four_sides<vertex_descriptor> sides;
-  const diffuv::Status status = diffuv::parameterize_disc(mesh, corners, atlas, &sides);
+  diffuv::Disc_parameterization_report<Mesh> disc_report;
+  const diffuv::Status status = diffuv::parameterize_disc(mesh, mesh.points(), corners, atlas, {}, &disc_report);
+  sides = disc_report.sides;
   if(!status) {
     std::cerr << "Error: " << status.what() << std::endl;
     return EXIT_FAILURE;

@@ -32,7 +32,7 @@ int main(int argc, char** argv)
 
   diffuv::Segmentation<Mesh> seg;
   diffuv::Patching_report patching;
-  const diffuv::Status status = diffuv::disc_patches(mesh, labels, mesh.points(), seg, {}, &patching);
+  const diffuv::Status status = diffuv::disc_patches(mesh, mesh.points(), labels, seg, {}, &patching);
   if(!status) {
     std::cerr << "Error: " << status.what() << std::endl;
     return EXIT_FAILURE;
@@ -41,7 +41,7 @@ int main(int argc, char** argv)
             << ", " << patching.caps_split << " caps split)\n";
 
   diffuv::Uv_atlas<Mesh> atlas(mesh);
-  const auto results = diffuv::parameterize_patches(mesh, seg, mesh.points(), atlas);
+  const auto results = diffuv::parameterize_patches(mesh, mesh.points(), seg, atlas);
   std::size_t mapped = 0;
   for(std::size_t p = 0; p < results.size(); ++p) {
     if(!results[p].status) {

@@ -27,7 +27,7 @@ int main(int argc, char** argv)
   }
 
   Atlas atlas(mesh);
-  const diffuv::Status status = diffuv::parameterize_disc(mesh, {}, atlas); // automatic corners
+  const diffuv::Status status = diffuv::parameterize_disc(mesh, mesh.points(), {}, atlas); // automatic corners
   if(!status) {
     std::cerr << "Error: " << status.what() << std::endl;
     return EXIT_FAILURE;

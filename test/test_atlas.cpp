@@ -39,7 +39,7 @@ TEST(Atlas, VertexToUvToVertexRoundTrip)
   for(const char* name : {"nefertiti.off", "mushroom.off", "three_peaks.off"}) {
     const Mesh& mesh = cgal_mesh(name);
     Atlas atlas(mesh);
-    ASSERT_TRUE(diffuv::parameterize_disc(mesh, {}, atlas).ok());
+    ASSERT_TRUE(diffuv::parameterize_disc(mesh, mesh.points(), {}, atlas).ok());
     const auto& chart = atlas.chart(0);
     std::size_t same_vertex = 0;
     for(std::uint32_t i = 0; i < chart.vertices.size(); ++i) {
@@ -117,7 +117,7 @@ TEST(Atlas, OutsideQueriesGiveTheNearestPointOfTheChart)
   const std::size_t n = 6;
   const Mesh grid = make_grid(n, n);
   Atlas atlas(grid);
-  ASSERT_TRUE(diffuv::parameterize_disc(grid, {grid_vertex(n, 0, 0), grid_vertex(n, n, 0), grid_vertex(n, n, n),
+  ASSERT_TRUE(diffuv::parameterize_disc(grid, grid.points(), {grid_vertex(n, 0, 0), grid_vertex(n, n, 0), grid_vertex(n, n, n),
                                                grid_vertex(n, 0, n)}, atlas).ok());
   const auto loc = atlas.locate(0, Point_2(2., 2.));
   EXPECT_FALSE(loc.inside);
@@ -198,7 +198,7 @@ TEST(Atlas, PointLocationPrefersAProperTriangleToAFlatOne)
     atlas.add_chart({flat, proper}, {a, b, c, d}, {Point_2(0, 0), Point_2(0.5, 0), Point_2(1, 0), Point_2(0.5, 1)});
     // (0.2, 0): the nearest vertex is a, whose star holds both triangles.
     const auto loc = atlas.locate(0, Point_2(0.2, 0));
-    EXPECT_EQ(loc.location.first, proper) << (flat_first ? "flat face added first" : "proper face added first");
+    EXPECT_EQ(loc.location.first, proper) << (flat_first ? "flat triangle added first" : "proper face added first");
     EXPECT_TRUE(loc.inside);
     const auto p = atlas.point(loc);
     EXPECT_NEAR(p.x(), 0.4, 1e-12);
@@ -206,7 +206,7 @@ TEST(Atlas, PointLocationPrefersAProperTriangleToAFlatOne)
     // (0.5, 0) is b's (u,v): b itself, although it also lies inside the flat
     // triangle's edge ac and on the proper triangle's edge.
     const auto at_b = atlas.point(atlas.locate(0, Point_2(0.5, 0)));
-    EXPECT_EQ(at_b, m.point(b)) << (flat_first ? "flat face added first" : "proper face added first");
+    EXPECT_EQ(at_b, m.point(b)) << (flat_first ? "flat triangle added first" : "proper face added first");
   }
 }
 

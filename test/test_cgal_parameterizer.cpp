@@ -77,7 +77,7 @@ std::vector<typename boost::graph_traits<Graph>::vertex_descriptor> vertices_by_
 std::vector<Point_2> native_uv(const Mesh& mesh, const std::vector<vertex_descriptor>& corners)
 {
   diffuv::Uv_atlas<Mesh> atlas(mesh);
-  const diffuv::Status status = diffuv::parameterize_disc(mesh, corners, atlas);
+  const diffuv::Status status = diffuv::parameterize_disc(mesh, mesh.points(), corners, atlas);
   EXPECT_TRUE(status.ok()) << status.what();
   std::vector<Point_2> uv;
   for(vertex_descriptor v : vertices(mesh)) uv.push_back(get(atlas.vertex_uv_map(), v));
@@ -212,7 +212,9 @@ TEST(CgalParameterizer, AutomaticCornersOnTheSquaresCorners)
   const std::vector<vertex_descriptor> loop = diffuv::counterclockwise_boundary(mesh, bhd);
   diffuv::Uv_atlas<Mesh> atlas(mesh);
   diffuv::Four_sides<vertex_descriptor> sides;
-  ASSERT_TRUE(diffuv::parameterize_disc(mesh, {}, atlas, &sides).ok());
+  diffuv::Disc_parameterization_report<Mesh> disc_report;
+  ASSERT_TRUE(diffuv::parameterize_disc(mesh, mesh.points(), {}, atlas, {}, &disc_report).ok());
+  sides = disc_report.sides;
   EXPECT_EQ(chosen, std::vector<vertex_descriptor>(sides.corners.begin(), sides.corners.end())); // the native choice
   const Point_2 square[4] = {Point_2(0, 0), Point_2(1, 0), Point_2(1, 1), Point_2(0, 1)};
   for(std::size_t c = 0; c < 4; ++c) EXPECT_EQ(muv[chosen[c]], square[c]);
@@ -284,7 +286,7 @@ TEST(CgalParameterizer, DistanceAndHeapTagsArePassedOn)
   const halfedge_descriptor bhd = PMP::longest_border(mesh).first;
   auto native = [&](auto heap, auto distance) {
     diffuv::Uv_atlas<Mesh> atlas(mesh);
-    EXPECT_TRUE(diffuv::parameterize_disc(mesh, corners, atlas, nullptr, heap, distance).ok());
+    EXPECT_TRUE((diffuv::parameterize_disc<decltype(distance), decltype(heap)>(mesh, mesh.points(), corners, atlas).ok()));
     std::vector<Point_2> uv;
     for(vertex_descriptor v : vertices(mesh)) uv.push_back(get(atlas.vertex_uv_map(), v));
     return uv;
@@ -311,7 +313,7 @@ TEST(CgalParameterizer, DistanceAndHeapTagsArePassedOn)
   // A heap alone: the library's default distance.
   auto default_uv = [&] {
     diffuv::Uv_atlas<Mesh> atlas(mesh);
-    EXPECT_TRUE(diffuv::parameterize_disc(mesh, corners, atlas).ok());
+    EXPECT_TRUE(diffuv::parameterize_disc(mesh, mesh.points(), corners, atlas).ok());
     std::vector<Point_2> uv;
     for(vertex_descriptor v : vertices(mesh)) uv.push_back(get(atlas.vertex_uv_map(), v));
     return uv;

@@ -39,7 +39,7 @@ std::size_t cell_face(std::size_t nx, std::size_t i, std::size_t j, int upper) {
 // Number of components of each label.
 std::map<int, std::size_t> components_per_label(const Mesh& m, const std::vector<int>& labels)
 {
-  const auto seg = diffuv::patches_from_labels(m, labels, m.points());
+  const auto seg = diffuv::patches_from_labels(m, m.points(), labels);
   std::map<int, std::size_t> count;
   for(int l : seg.patch_label) ++count[l];
   return count;
@@ -128,7 +128,7 @@ std::size_t border_edges(const Mesh& m, const std::vector<int>& labels)
 // Every patch of the labels is a topological disc.
 ::testing::AssertionResult all_discs(const Mesh& m, const std::vector<int>& labels)
 {
-  const auto seg = diffuv::patches_from_labels(m, labels, m.points());
+  const auto seg = diffuv::patches_from_labels(m, m.points(), labels);
   for(std::size_t p = 0; p < seg.number_of_patches(); ++p) {
     const diffuv::Status s = diffuv::check_patch_disc(m, seg, p);
     if(!s) return ::testing::AssertionFailure() << s.what();
@@ -155,7 +155,7 @@ const std::vector<int>& automatic_labels(const std::string& name)
     diffuv::Segmentation<Mesh> seg;
     diffuv::Patching_options options;
     options.layout = diffuv::Patch_layout::voronoi;
-    EXPECT_TRUE(diffuv::disc_patches(m, std::vector<int>(), m.points(), seg, options).ok()) << name;
+    EXPECT_TRUE(diffuv::disc_patches(m, m.points(), std::vector<int>(), seg, options).ok()) << name;
     it = cache.emplace(name, std::vector<int>(seg.face_patch.begin(), seg.face_patch.end())).first;
   }
   return it->second;
@@ -306,7 +306,7 @@ TEST(CleanLabels, LargeComponentsOfOneLabelAreAllKept)
   EXPECT_EQ(report.islands, 1u);
   EXPECT_EQ(report.island_faces, 1u);
   EXPECT_EQ(labels[cell_face(n, 3, 12, 1)], 0);
-  const auto seg = diffuv::patches_from_labels(grid, labels, grid.points());
+  const auto seg = diffuv::patches_from_labels(grid, grid.points(), labels);
   ASSERT_EQ(seg.number_of_patches(), 3u); // label 0, then the two blocks of label 1
   EXPECT_EQ(seg.patch_label[1], 1);
   EXPECT_EQ(seg.patch_label[2], 1);

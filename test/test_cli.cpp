@@ -284,7 +284,7 @@ TEST_F(Tool, SegmentWritesPatchesThatReadBackAsLabelsAndAsPaint)
 
 // Issue #5: a face left flat by its sides that no corners can mend (a small
 // patch of anchor with more ears than corners) goes to a neighbouring patch;
-// --keep-flat-faces keeps it (and says nothing).
+// --keep-flat-triangles keeps it (and says nothing).
 TEST_F(Tool, SegmentHandsFlatFacesToANeighbourUnlessKept)
 {
   const std::string anchor = data_path("meshes/anchor.off");
@@ -292,11 +292,11 @@ TEST_F(Tool, SegmentHandsFlatFacesToANeighbourUnlessKept)
   ASSERT_EQ(handed.code, 0) << handed.err;
   const auto clause = handed.out.find(" handed to a neighbour");
   ASSERT_NE(clause, std::string::npos) << handed.out;
-  const auto noun = handed.out.rfind(" flat face", clause);
+  const auto noun = handed.out.rfind(" flat triangle", clause);
   ASSERT_NE(noun, std::string::npos) << handed.out;
   const std::size_t count = std::stoul(handed.out.substr(handed.out.rfind(' ', noun - 1) + 1));
   EXPECT_GT(count, 0u);
-  const Tool_run kept = run("segment " + anchor + " --keep-flat-faces -o " + (dir_ / "b").string());
+  const Tool_run kept = run("segment " + anchor + " --keep-flat-triangles -o " + (dir_ / "b").string());
   ASSERT_EQ(kept.code, 0) << kept.err;
   EXPECT_EQ(kept.out.find("handed"), std::string::npos) << kept.out;
 

@@ -240,7 +240,7 @@ TEST(CgalCompare, NefertitiFixedBorderMethodsAreInjectiveWithOurCornersAndSides)
       EXPECT_LE(uv[v].y(), 1 + 1e-12);
     }
     EXPECT_GT(total_signed_area(m, faces, uv), 0); // not mirrored
-    const auto d = diffuv::measure_distortion(m, faces, m.points(), uv.map());
+    const auto d = diffuv::measure_distortion(m, m.points(), faces, uv.map());
     // A theorem for Tutte and mean value; authalic and cotangent weights can
     // be negative and fold in general, but do not on this mesh.
     EXPECT_TRUE(d.injective()) << d.flipped << " flipped, " << d.degenerate << " degenerate, "
@@ -271,7 +271,7 @@ TEST(CgalCompare, NefertitiFreeBorderMethods)
       EXPECT_TRUE(std::isfinite(uv[v].x()) && std::isfinite(uv[v].y()));
     }
     EXPECT_GT(total_signed_area(m, faces, uv), 0);
-    const auto d = diffuv::measure_distortion(m, faces, m.points(), uv.map());
+    const auto d = diffuv::measure_distortion(m, m.points(), faces, uv.map());
     EXPECT_EQ(d.flipped, 0u);
     EXPECT_EQ(d.overlapping_pairs, 0u);
     EXPECT_LT(d.angle_mean, 1.5);
@@ -321,13 +321,13 @@ TEST(CgalCompare, SegmentationPatchOfCow)
 {
   const Mesh& m = cgal_mesh("cow.off");
   diffuv::Segmentation<Mesh> seg;
-  ASSERT_TRUE(diffuv::disc_patches(m, {}, m.points(), seg));
+  ASSERT_TRUE(diffuv::disc_patches(m, m.points(), {}, seg));
   ASSERT_GT(seg.number_of_patches(), 1u);
   std::size_t p = 0; // the largest patch
   for(std::size_t q = 1; q < seg.number_of_patches(); ++q)
     if(seg.patch_faces[q].size() > seg.patch_faces[p].size()) p = q;
   diffuv::Four_sides<Vertex> sides;
-  ASSERT_TRUE(diffuv::region_sides(m, seg, p, m.points(), sides));
+  ASSERT_TRUE(diffuv::region_sides(m, m.points(), seg, p, sides));
   const auto& faces = seg.patch_faces[p];
   std::set<Vertex> patch_vertices;
   for(Face f : faces)
@@ -347,7 +347,7 @@ TEST(CgalCompare, SegmentationPatchOfCow)
       for(int c = 0; c < 4; ++c) EXPECT_EQ(uv[sides.corners[c]], square[c]) << "corner " << c;
     }
     if(method == Cgal_method::tutte || method == Cgal_method::mean_value) {
-      const auto d = diffuv::measure_distortion(m, faces, m.points(), uv.map());
+      const auto d = diffuv::measure_distortion(m, m.points(), faces, uv.map());
       EXPECT_EQ(d.flipped, 0u);
       EXPECT_EQ(d.overlapping_pairs, 0u);
     }

@@ -42,7 +42,7 @@ std::vector<int> segment_labels(const Mesh& m, std::size_t patches = 12)
   diffuv::Patching_options options;
   options.layout = diffuv::Patch_layout::voronoi;
   options.automatic.patches = patches;
-  EXPECT_TRUE(diffuv::disc_patches(m, std::vector<int>(), m.points(), seg, options).ok());
+  EXPECT_TRUE(diffuv::disc_patches(m, m.points(), std::vector<int>(), seg, options).ok());
   std::vector<int> labels(num_faces(m));
   for(auto f : faces(m)) labels[f.idx()] = static_cast<int>(seg.face_patch[f.idx()]);
   return labels;
@@ -159,7 +159,7 @@ TEST(Correspondence, CutsAndCapSplitsAreIntrinsic)
   }
   // One label per connected band piece: two pieces of one label with nearly
   // equal areas (cow's ears) would pair by area rank, which is ambiguous.
-  const auto pieces = diffuv::patches_from_labels(a, labels, a.points());
+  const auto pieces = diffuv::patches_from_labels(a, a.points(), labels);
   for(auto f : faces(a)) labels[f.idx()] = static_cast<int>(pieces.face_patch[f.idx()]);
   const Moved_copy b = shuffled_moved_copy(a, 5, true);
   Atlas atlas_a(a), atlas_b(b.mesh);
@@ -297,10 +297,10 @@ TEST(Correspondence, LabelsThatNeedCleaning)
   Atlas atlas_a(a), clean_b(b.mesh), raw_b(b.mesh);
   build(a, labels, atlas_a);
   const auto follow = diffuv::atlas_to_follow(atlas_a);
-  ASSERT_TRUE(diffuv::build_labelled_atlas(b.mesh, b.mesh.points(), noisy, clean_b, {}, diffuv::Default_distance_tag(), &follow).ok());
+  ASSERT_TRUE(diffuv::build_labelled_atlas(b.mesh, b.mesh.points(), noisy, follow, clean_b).ok());
   diffuv::Labelled_atlas_options no_cleaning;
   no_cleaning.clean = false;
-  ASSERT_TRUE(diffuv::build_labelled_atlas(b.mesh, b.mesh.points(), noisy, raw_b, no_cleaning, diffuv::Default_distance_tag(), &follow).ok());
+  ASSERT_TRUE(diffuv::build_labelled_atlas(b.mesh, b.mesh.points(), noisy, follow, raw_b, no_cleaning).ok());
   EXPECT_FALSE(clean_b.cleaning.empty());
 
   auto mean_error = [&](const Atlas& atlas_b, std::size_t& unmapped) {
@@ -439,7 +439,7 @@ TEST(SubPatches, RegionsOfThreeOrFiveToNineRunsBecomeFourSidedSectors)
   const Mesh& a = cow();
   const std::vector<int> labels = segment_labels(a);
   diffuv::Segmentation<Mesh> regions;
-  ASSERT_TRUE(diffuv::disc_patches(a, labels, a.points(), regions, diffuv::Labelled_atlas_options().patching).ok());
+  ASSERT_TRUE(diffuv::disc_patches(a, a.points(), labels, regions, diffuv::Labelled_atlas_options().patching).ok());
   std::map<std::pair<int, int>, std::size_t> expected;  // (label, part) of a region -> its runs, if split
   std::size_t whole = 0;
   for(std::size_t p = 0; p < regions.number_of_patches(); ++p) {
@@ -451,7 +451,7 @@ TEST(SubPatches, RegionsOfThreeOrFiveToNineRunsBecomeFourSidedSectors)
   ASSERT_GE(expected.size(), 3u) << "cow's 12 Voronoi regions should have several with 3 or 5+ runs";
 
   diffuv::Segmentation<Mesh> seg = regions;
-  const diffuv::Sub_patch_report report = diffuv::split_regions_into_quads(a, seg, a.points());
+  const diffuv::Sub_patch_report report = diffuv::split_regions_into_quads(a, a.points(), seg);
   EXPECT_EQ(report.regions_split + report.not_split, expected.size());
   EXPECT_LE(report.not_split, 1u);
   ASSERT_EQ(report.runs.size(), regions.number_of_patches());
@@ -578,8 +578,7 @@ TEST(SubPatches, AFollowingMeshSplitsAsTheOneItFollows)
     EXPECT_EQ(alone.sub_patching.regions_split, 0u) << "these options should split nothing on their own";
   }
   const diffuv::Atlas_to_follow follow = diffuv::atlas_to_follow(atlas_a);
-  ASSERT_TRUE(diffuv::build_labelled_atlas(b.mesh, b.mesh.points(), carry_labels(labels, b), atlas_b, own,
-                                           diffuv::Default_distance_tag(), &follow).ok());
+  ASSERT_TRUE(diffuv::build_labelled_atlas(b.mesh, b.mesh.points(), carry_labels(labels, b), follow, atlas_b, own).ok());
   EXPECT_EQ(atlas_b.split_runs, atlas_a.split_runs);
   EXPECT_EQ(atlas_b.sub_patching.regions_split, atlas_a.sub_patching.regions_split);
   const Correspondence c(atlas_a, atlas_b);

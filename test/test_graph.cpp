@@ -63,7 +63,7 @@ void expect_same_as_boost_on(const std::string& name)
     const auto expected = boost_reference(mesh, lengths, sources);
     std::vector<double> dist(num_vertices(mesh), -1.);
     auto dmap = boost::make_iterator_property_map(dist.begin(), get(boost::vertex_index, mesh));
-    ASSERT_TRUE(diffuv::multi_source_dijkstra(mesh, sources, lengths, dmap, HeapTag()).ok());
+    ASSERT_TRUE(diffuv::multi_source_dijkstra<HeapTag>(mesh, sources, lengths, dmap).ok());
     std::size_t mismatches = 0;
     for(std::size_t i = 0; i < dist.size(); ++i)
       if(dist[i] != expected[i]) ++mismatches; // exact: same path sums
@@ -102,7 +102,7 @@ TYPED_TEST(Dijkstra_heaps, SameDistancesAsBoostOnRandomGraphs)
     const auto expected = boost_reference(g, w, sources);
     std::vector<double> dist(n);
     auto dmap = boost::make_iterator_property_map(dist.begin(), get(boost::vertex_index, g));
-    ASSERT_TRUE(diffuv::multi_source_dijkstra(g, sources, w, dmap, TypeParam()).ok());
+    ASSERT_TRUE(diffuv::multi_source_dijkstra<TypeParam>(g, sources, w, dmap).ok());
     for(std::size_t i = 0; i < n; ++i)
       ASSERT_EQ(dist[i], expected[i]) << "trial " << trial << " vertex " << i;
   }

@@ -12,7 +12,7 @@
 #include <diffuv/parameterization/parameterize_patches.h>
 #include <diffuv/layout/disc_patches.h>
 #include <diffuv/layout/fan_split.h>
-#include <diffuv/patches/flat_faces.h>
+#include <diffuv/patches/flat_triangles.h>
 #include <diffuv/layout/quad_layout.h>
 #include <diffuv/patches/region_sides.h>
 
@@ -38,7 +38,7 @@ struct Layout_check {
   std::size_t corners_off = 0;    // quads whose corners are not on their border, counter-clockwise
   std::size_t mixed_sides = 0;    // sides of a quad along two patches or more
   std::size_t t_junctions = 0;    // sides of a quad whose neighbour (a quad) has no corner at one of its ends
-  std::size_t flat_faces = 0;     // faces of a quad with their three vertices on one side
+  std::size_t flat_triangles = 0;     // faces of a quad with their three vertices on one side
 };
 
 Layout_check check_layout(const Mesh& m, const Seg& seg)
@@ -50,9 +50,9 @@ Layout_check check_layout(const Mesh& m, const Seg& seg)
     if(!corners) continue;
     ++c.quads;
     diffuv::Four_sides<vertex_descriptor> sides;
-    if(!diffuv::region_sides(m, seg, p, m.points(), sides)) { ++c.corners_off; continue; }
-    c.flat_faces += diffuv::flat_faces(m, seg, p, sides).size();
-    const auto loop = diffuv::patch_loops(m, seg, p, m.points()).front();
+    if(!diffuv::region_sides(m, m.points(), seg, p, sides)) { ++c.corners_off; continue; }
+    c.flat_triangles += diffuv::flat_triangles(m, seg, p, sides).size();
+    const auto loop = diffuv::patch_loops(m, m.points(), seg, p).front();
     const std::size_t n = loop.vertices.size();
     std::array<std::size_t, 4> at{};
     for(std::size_t k = 0; k < 4; ++k)
@@ -103,7 +103,7 @@ Shuffled shuffled_copy(const Mesh& m, unsigned seed)
 Seg automatic_layout(const Mesh& m, diffuv::Patching_report* report = nullptr)
 {
   Seg seg;
-  EXPECT_TRUE(diffuv::disc_patches(m, {}, m.points(), seg, diffuv::Patching_options(), report).ok());
+  EXPECT_TRUE(diffuv::disc_patches(m, m.points(), {}, seg, diffuv::Patching_options(), report).ok());
   return seg;
 }
 
@@ -137,7 +137,7 @@ TEST(QuadLayout, CowIsAConformingLayoutOfQuads)
   EXPECT_EQ(c.corners_off, 0u);
   EXPECT_EQ(c.mixed_sides, 0u);
   EXPECT_EQ(c.t_junctions, 0u);
-  EXPECT_EQ(c.flat_faces, 0u);
+  EXPECT_EQ(c.flat_triangles, 0u);
   // Most of the surface is quads of the layout (the rest: small cells left
   // to the fallbacks); the report counts them.
   EXPECT_EQ(c.quads, report.layout.quads);
@@ -185,11 +185,11 @@ TEST(QuadLayout, LabelledRegionsAreSplitWithinTheirBorders)
   std::vector<int> labels = height_bands(cow, 1, 4);
   // Slivers of a band with fewer than four border vertices join a neighbour
   // first (documented in disc_patches()); the bands are what is left.
-  Seg bands = diffuv::patches_from_labels(cow, labels, cow.points());
-  diffuv::merge_small_patches(cow, labels, bands, cow.points());
+  Seg bands = diffuv::patches_from_labels(cow, cow.points(), labels);
+  diffuv::merge_small_patches(cow, cow.points(), labels, bands);
   Seg seg;
   diffuv::Patching_report report;
-  ASSERT_TRUE(diffuv::disc_patches(cow, labels, cow.points(), seg, diffuv::Patching_options(), &report).ok());
+  ASSERT_TRUE(diffuv::disc_patches(cow, cow.points(), labels, seg, diffuv::Patching_options(), &report).ok());
   EXPECT_EQ(report.layout.kept_regions, 0u);
   std::map<int, std::set<int>> parts;
   for(std::size_t p = 0; p < seg.number_of_patches(); ++p) {
@@ -218,11 +218,11 @@ TEST(QuadLayout, FallbackPatchesNeedingMoreThanFourCornersAreCut)
   struct Laid { Seg seg; std::size_t flat = 0, fallbacks = 0, split = 0; };
   auto laid_out = [](const Mesh& m, const std::vector<int>& face_labels, bool cut) {
     diffuv::Patching_options options;
-    options.hand_off_flat_faces = false;  // the faces left flat by the corners alone
+    options.hand_off_flat_triangles = false;  // the faces left flat by the corners alone
     options.quads.split_at_junctions = cut;
     Laid laid;
     diffuv::Patching_report report;
-    EXPECT_TRUE(diffuv::disc_patches(m, face_labels, m.points(), laid.seg, options, &report).ok());
+    EXPECT_TRUE(diffuv::disc_patches(m, m.points(), face_labels, laid.seg, options, &report).ok());
     laid.split = report.layout.split_fallbacks;
     const Seg& seg = laid.seg;
     for(std::size_t p = 0; p < seg.number_of_patches(); ++p) {
@@ -230,8 +230,8 @@ TEST(QuadLayout, FallbackPatchesNeedingMoreThanFourCornersAreCut)
       if(seg.corners(p)) continue;
       ++laid.fallbacks;
       diffuv::Four_sides<vertex_descriptor> sides;
-      EXPECT_TRUE(diffuv::region_sides(m, seg, p, m.points(), sides).ok());
-      laid.flat += diffuv::flat_faces(m, seg, p, sides).size();
+      EXPECT_TRUE(diffuv::region_sides(m, m.points(), seg, p, sides).ok());
+      laid.flat += diffuv::flat_triangles(m, seg, p, sides).size();
     }
     // Still conforming: a cut ends where a neighbour's run ends.
     const Layout_check c = check_layout(m, seg);
@@ -270,8 +270,8 @@ TEST(QuadLayout, ALayoutReadBackIsKeptWhole)
   Seg back;
   diffuv::Patching_report report;
   diffuv::Patching_options options;
-  options.hand_off_flat_faces = false;
-  ASSERT_TRUE(diffuv::disc_patches(cow, labels, cow.points(), back, options, &report).ok());
+  options.hand_off_flat_triangles = false;
+  ASSERT_TRUE(diffuv::disc_patches(cow, cow.points(), labels, back, options, &report).ok());
   EXPECT_EQ(report.layout.kept_regions, laid.number_of_patches());
   ASSERT_EQ(back.number_of_patches(), laid.number_of_patches());
   for(auto f : faces(cow)) EXPECT_EQ(back.patch_label[back.face_patch[f.idx()]], labels[f.idx()]);
@@ -332,7 +332,7 @@ TEST(QuadLayout, JudgeFindsThePatchesWhoseMapIsBad)
   for(auto v : vertices(sphere)) { low = std::min(low, sphere.point(v).z()); high = std::max(high, sphere.point(v).z()); }
   std::vector<int> parts(num_faces(sphere));
   for(auto f : faces(sphere)) parts[f.idx()] = height(sphere, f, 2) > low + 0.15 * (high - low) ? 1 : 0;
-  Seg split = diffuv::patches_from_labels(sphere, parts, sphere.points());
+  Seg split = diffuv::patches_from_labels(sphere, sphere.points(), parts);
   ASSERT_EQ(split.number_of_patches(), 2u);
   const diffuv::Raw_map_judge<Mesh, decltype(sphere.points())> judge(sphere, sphere.points());
   const auto bad = judge(split);
@@ -353,12 +353,12 @@ TEST(QuadLayout, JudgeRemembersQuadsAndAnswersAsAFreshOne)
   const Judge used(cow, cow.points());
   Seg refined, other;
   diffuv::Patching_report report;
-  ASSERT_TRUE(diffuv::disc_patches(cow, {}, cow.points(), refined, diffuv::Patching_options(), &report, used).ok());
+  ASSERT_TRUE(diffuv::disc_patches(cow, cow.points(), {}, refined, diffuv::Patching_options(), &report, used).ok());
   ASSERT_GT(report.layout.rounds, 0u);
   ASSERT_GT(report.layout.fans_reused, 0u) << "the rounds should share fans";
   diffuv::Patching_options fewer;
   fewer.quads.target_patches = 120;
-  ASSERT_TRUE(diffuv::disc_patches(cow, {}, cow.points(), other, fewer).ok());
+  ASSERT_TRUE(diffuv::disc_patches(cow, cow.points(), {}, other, fewer).ok());
   for(const Seg* layout : {&refined, &other, &refined}) {
     const auto remembered = used(*layout);
     EXPECT_EQ(remembered, Judge(cow, cow.points())(*layout));
@@ -379,19 +379,18 @@ TEST(QuadLayout, BearMeetsTheStretchTargetsOnceRefinedAndNearFoldsMended)
   const diffuv::Raw_map_judge<Mesh, decltype(bear.points())> judge(bear, bear.points());
   Seg seg;
   diffuv::Patching_report report;
-  ASSERT_TRUE(diffuv::disc_patches(bear, {}, bear.points(), seg, diffuv::Patching_options(), &report, judge).ok());
+  ASSERT_TRUE(diffuv::disc_patches(bear, bear.points(), {}, seg, diffuv::Patching_options(), &report, judge).ok());
   EXPECT_GT(report.layout.refined_cells, 0u);
   auto atlas_of = [&](const diffuv::Repair_options& repair, std::size_t& moved) {
     diffuv::Uv_atlas<Mesh> atlas(bear);
-    const auto results = diffuv::parameterize_patches(bear, seg, bear.points(), atlas, diffuv::Default_distance_tag(),
-                                                      diffuv::Fibonacci_heap_tag(), repair);
+    const auto results = diffuv::parameterize_patches<diffuv::Default_distance_tag>(bear, bear.points(), seg, atlas, diffuv::Patch_parameterization_options{repair});
     diffuv::Distortion_summary total;
     moved = 0;
     for(const auto& r : results) {
       EXPECT_TRUE(r.status.ok()) << r.status.what();
       if(!r.status.ok()) continue;
       moved += r.repair.moved_vertices + r.repair.moved_border_vertices;
-      total = diffuv::combined(total, diffuv::measure_distortion(bear, atlas.chart(r.chart).faces, bear.points(),
+      total = diffuv::combined(total, diffuv::measure_distortion(bear, bear.points(), atlas.chart(r.chart).faces,
                                                                  atlas.chart_texture_map(r.chart)));
     }
     return total;
@@ -437,12 +436,12 @@ TEST(QuadLayout, FallbackCornersChosenByTheirMapsServeThemBetter)
 
   auto map_all = [&](const Seg& seg) {
     diffuv::Uv_atlas<Mesh> atlas(cow);
-    const auto results = diffuv::parameterize_patches(cow, seg, cow.points(), atlas);
+    const auto results = diffuv::parameterize_patches(cow, cow.points(), seg, atlas);
     std::vector<diffuv::Distortion_summary> d(results.size());
     for(std::size_t p = 0; p < results.size(); ++p) {
       EXPECT_TRUE(results[p].status.ok()) << p;
       if(results[p].status.ok())
-        d[p] = diffuv::measure_distortion(cow, atlas.chart(results[p].chart).faces, cow.points(),
+        d[p] = diffuv::measure_distortion(cow, cow.points(), atlas.chart(results[p].chart).faces,
                                           atlas.chart_texture_map(results[p].chart));
     }
     return d;
@@ -465,7 +464,7 @@ TEST(QuadLayout, FallbackCornersChosenByTheirMapsServeThemBetter)
     }
     ++changed;
     EXPECT_LE(after[p].stretch_l2, 0.98 * before[p].stretch_l2) << p;
-    const auto loop = diffuv::patch_loops(cow, chosen, p, cow.points()).front();
+    const auto loop = diffuv::patch_loops(cow, cow.points(), chosen, p).front();
     const std::size_t n = loop.vertices.size();
     std::array<std::size_t, 4> at{};
     for(std::size_t k = 0; k < 4; ++k) {
@@ -490,14 +489,14 @@ TEST(QuadLayout, EveryChartOfTheDefaultAtlasIsOneToOne)
     const Mesh& m = cgal_mesh(name);
     const diffuv::Raw_map_judge<Mesh, decltype(m.points())> judge(m, m.points());
     Seg seg;
-    ASSERT_TRUE(diffuv::disc_patches(m, {}, m.points(), seg, diffuv::Patching_options(), nullptr, judge).ok()) << name;
+    ASSERT_TRUE(diffuv::disc_patches(m, m.points(), {}, seg, diffuv::Patching_options(), nullptr, judge).ok()) << name;
     diffuv::Uv_atlas<Mesh> atlas(m);
-    const auto results = diffuv::parameterize_patches(m, seg, m.points(), atlas);
+    const auto results = diffuv::parameterize_patches(m, m.points(), seg, atlas);
     for(std::size_t p = 0; p < results.size(); ++p) {
       const auto& r = results[p];
       ASSERT_TRUE(r.status.ok()) << name << " patch " << p << ": " << r.status.what();
-      EXPECT_EQ(r.repair.forced_degenerate, 0u) << name << " patch " << p;
-      const auto d = diffuv::measure_distortion(m, atlas.chart(r.chart).faces, m.points(), atlas.chart_texture_map(r.chart));
+      EXPECT_EQ(r.repair.flat_triangles, 0u) << name << " patch " << p;
+      const auto d = diffuv::measure_distortion(m, m.points(), atlas.chart(r.chart).faces, atlas.chart_texture_map(r.chart));
       EXPECT_TRUE(d.injective()) << name << " patch " << p << ": " << d.flipped << " flipped, " << d.degenerate
                                  << " degenerate, " << d.overlapping_pairs << " overlapping pairs";
     }
@@ -516,7 +515,7 @@ TEST(QuadLayout, CornersLeaveNoFlatTriangleWhereAnyPlacementWould)
   const Seg seg = automatic_layout(m);
   std::size_t checked = 0, with_flat_start = 0;
   for(std::size_t p = 0; p < seg.number_of_patches(); ++p) {
-    const auto loops = diffuv::patch_loops(m, seg, p, m.points());
+    const auto loops = diffuv::patch_loops(m, m.points(), seg, p);
     if(loops.size() != 1 || loops.front().vertices.size() > 40) continue;
     const auto& loop = loops.front();
     const std::size_t n = loop.vertices.size();
@@ -605,12 +604,12 @@ TEST(QuadLayout, ChartsAreDrawnOnRectanglesOfTheirAspect)
   diffuv::Uv_atlas<Mesh> atlas(rectangle);
   const std::vector<vertex_descriptor> corners = {grid_vertex(20, 0, 0), grid_vertex(20, 20, 0), grid_vertex(20, 20, 10),
                                                   grid_vertex(20, 0, 10)};
-  ASSERT_TRUE(diffuv::parameterize_disc(rectangle, corners, atlas).ok());
+  ASSERT_TRUE(diffuv::parameterize_disc(rectangle, rectangle.points(), corners, atlas).ok());
   EXPECT_NEAR(atlas.chart(0).size[0], 1.0, 1e-12);
   EXPECT_NEAR(atlas.chart(0).size[1], 0.5, 1e-12);
   std::vector<face_descriptor> all(faces(rectangle).begin(), faces(rectangle).end());
-  const auto drawn = diffuv::measure_distortion(rectangle, all, rectangle.points(), atlas.chart_texture_map(0));
-  const auto square = diffuv::measure_distortion(rectangle, all, rectangle.points(), atlas.chart_uv_map(0));
+  const auto drawn = diffuv::measure_distortion(rectangle, rectangle.points(), all, atlas.chart_texture_map(0));
+  const auto square = diffuv::measure_distortion(rectangle, rectangle.points(), all, atlas.chart_uv_map(0));
   EXPECT_LT(drawn.angle_mean, 1.02);
   EXPECT_GT(square.angle_mean, 1.9);
   // The corner as seen from its one face (its halfedge() may be the border's).
@@ -633,7 +632,7 @@ TEST(QuadLayout, ChartRectanglesHaveTheLeastStretchOfAnyAspect)
   const Mesh& m = cgal_mesh("cow.off");
   const Seg seg = automatic_layout(m);
   diffuv::Uv_atlas<Mesh> atlas(m);
-  const auto results = diffuv::parameterize_patches(m, seg, m.points(), atlas);
+  const auto results = diffuv::parameterize_patches(m, m.points(), seg, atlas);
   diffuv::Distortion_summary chosen_total, sides_total;
   std::size_t checked = 0, differ = 0;
   for(const auto& r : results) {
@@ -647,11 +646,11 @@ TEST(QuadLayout, ChartRectanglesHaveTheLeastStretchOfAnyAspect)
         const auto q = get(uv, v);
         return diffuv::Uv_atlas<Mesh>::Point_2(q.x() * width, q.y() * height);
       });
-      return diffuv::measure_distortion(m, chart.faces, m.points(), scaled);
+      return diffuv::measure_distortion(m, m.points(), chart.faces, scaled);
     };
     const auto at_chosen = l2_on(chosen[0], chosen[1]);
     EXPECT_NEAR(at_chosen.stretch_l2,
-                diffuv::measure_distortion(m, chart.faces, m.points(), atlas.chart_texture_map(r.chart)).stretch_l2, 1e-12);
+                diffuv::measure_distortion(m, m.points(), chart.faces, atlas.chart_texture_map(r.chart)).stretch_l2, 1e-12);
     EXPECT_LE(at_chosen.stretch_l2, l2_on(chosen[0] * 1.1, chosen[1]).stretch_l2 + 1e-12);
     EXPECT_LE(at_chosen.stretch_l2, l2_on(chosen[0] / 1.1, chosen[1]).stretch_l2 + 1e-12);
     const auto by_sides = diffuv::side_length_rectangle(r.sides, m.points());

@@ -87,7 +87,7 @@ diffuv::Distortion_summary measure_affine(double a, double b, double c, double d
   const std::vector<Point_2> xy = fill_square_grid(m, 4, 3, 0.25);
   Uv_map uv = add_uv(m);
   set_affine_uv(m, uv, xy, a, b, c, d, 0.3, -1.7);
-  return diffuv::measure_distortion(m, all_faces(m), m.points(), uv, per_face);
+  return diffuv::measure_distortion(m, m.points(), all_faces(m), uv, per_face);
 }
 
 // Every face, and the summary, have the given angle, area and stretch.
@@ -209,7 +209,7 @@ TEST(Metrics, TriangleLaidFlatIsAnIsometry)
   }
   m.add_face(v[0], v[1], v[2]);
   std::vector<diffuv::Triangle_distortion> per_face;
-  const auto s = diffuv::measure_distortion(m, all_faces(m), m.points(), uv, &per_face);
+  const auto s = diffuv::measure_distortion(m, m.points(), all_faces(m), uv, &per_face);
   ASSERT_EQ(per_face.size(), 1u);
   EXPECT_NEAR(per_face[0].area_3d, CGAL::Polygon_mesh_processing::area(m), tol);
   EXPECT_NEAR(per_face[0].signed_area_uv, per_face[0].area_3d, 1e-12);
@@ -280,7 +280,7 @@ TEST(Metrics, AreaDistortionOfTwoTriangles)
   m.add_face(v[0], v[1], v[2]);
   m.add_face(v[0], v[2], v[3]);
   std::vector<diffuv::Triangle_distortion> per_face;
-  const auto s = diffuv::measure_distortion(m, all_faces(m), m.points(), uv, &per_face);
+  const auto s = diffuv::measure_distortion(m, m.points(), all_faces(m), uv, &per_face);
   ASSERT_EQ(per_face.size(), 2u);
   EXPECT_NEAR(per_face[0].area, 4.0 / 3, tol);
   EXPECT_NEAR(per_face[1].area, 1.5, tol);
@@ -311,7 +311,7 @@ TEST(Metrics, OneFlippedTriangle)
   set_affine_uv(m, uv, xy, 1, 0, 0, 1);
   put(uv, Vertex(2), Point_2(1.2, 0.8));
   std::vector<diffuv::Triangle_distortion> per_face;
-  const auto s = diffuv::measure_distortion(m, all_faces(m), m.points(), uv, &per_face);
+  const auto s = diffuv::measure_distortion(m, m.points(), all_faces(m), uv, &per_face);
   EXPECT_EQ(s.flipped, 1u);
   ASSERT_EQ(per_face.size(), 4u);
   for(std::size_t i = 0; i < 4; ++i) EXPECT_EQ(per_face[i].flipped, i == 2) << "face " << i;
@@ -324,7 +324,7 @@ TEST(Metrics, OneFlippedTriangle)
   // The flipped face keeps the angle distortion of its mirror image.
   for(Vertex v : m.vertices()) put(uv, v, Point_2(-get(uv, v).x(), get(uv, v).y()));
   std::vector<diffuv::Triangle_distortion> mirrored;
-  diffuv::measure_distortion(m, std::vector<Face>{Face(2)}, m.points(), uv, &mirrored);
+  diffuv::measure_distortion(m, m.points(), std::vector<Face>{Face(2)}, uv, &mirrored);
   ASSERT_EQ(mirrored.size(), 1u);
   EXPECT_FALSE(mirrored[0].flipped);
   EXPECT_GT(mirrored[0].signed_area_uv, 0);
@@ -366,7 +366,7 @@ TEST(Metrics, TwoOverlappingTriangles)
     }
     m.add_face(v[0], v[1], v[2]);
   }
-  const auto s = diffuv::measure_distortion(m, all_faces(m), m.points(), uv);
+  const auto s = diffuv::measure_distortion(m, m.points(), all_faces(m), uv);
   EXPECT_EQ(s.overlapping_pairs, 1u);
   EXPECT_EQ(s.flipped, 0u);
   EXPECT_FALSE(s.injective());
@@ -381,14 +381,14 @@ TEST(Metrics, ValidPlanarGridsHaveNoOverlaps)
   Uv_map uv = add_uv(m);
   set_affine_uv(m, uv, xy, 1, 0, 0, 1);
   EXPECT_EQ(diffuv::count_overlapping_pairs(m, all_faces(m), uv), 0u);
-  EXPECT_TRUE(diffuv::measure_distortion(m, all_faces(m), m.points(), uv).injective());
+  EXPECT_TRUE(diffuv::measure_distortion(m, m.points(), all_faces(m), uv).injective());
 
   // A smooth warp (identity plus a 0.1-Lipschitz term, hence one-to-one).
   for(Vertex v : m.vertices()) {
     const Point_2& p = xy[v.idx()];
     put(uv, v, Point_2(p.x() + 0.1 * std::sin(3 * p.y()) / 3, p.y() + 0.1 * std::sin(3 * p.x()) / 3));
   }
-  const auto s = diffuv::measure_distortion(m, all_faces(m), m.points(), uv);
+  const auto s = diffuv::measure_distortion(m, m.points(), all_faces(m), uv);
   EXPECT_EQ(s.faces, 800u);
   EXPECT_EQ(s.overlapping_pairs, 0u);
   EXPECT_TRUE(s.injective());
@@ -404,7 +404,7 @@ TEST(Metrics, DegenerateTriangleIsReportedAndSkipped)
   set_affine_uv(m, uv, xy, 1, 0, 0, 1);
   put(uv, Vertex(2), Point_2(1.5, 0.5));
   std::vector<diffuv::Triangle_distortion> per_face;
-  const auto s = diffuv::measure_distortion(m, all_faces(m), m.points(), uv, &per_face);
+  const auto s = diffuv::measure_distortion(m, m.points(), all_faces(m), uv, &per_face);
   EXPECT_EQ(s.degenerate, 1u);
   EXPECT_TRUE(per_face[2].degenerate);
   EXPECT_FALSE(per_face[2].flipped);
@@ -426,9 +426,9 @@ TEST(Metrics, PerFaceFollowsRangeOrder)
     put(uv, v, Point_2(xy[v.idx()].x() * (1 + 0.1 * xy[v.idx()].y()), xy[v.idx()].y() + 0.05 * xy[v.idx()].x() * xy[v.idx()].x()));
   std::vector<Face> faces = all_faces(m);
   std::vector<diffuv::Triangle_distortion> forward, backward;
-  diffuv::measure_distortion(m, faces, m.points(), uv, &forward);
+  diffuv::measure_distortion(m, m.points(), faces, uv, &forward);
   std::reverse(faces.begin(), faces.end());
-  diffuv::measure_distortion(m, faces, m.points(), uv, &backward);
+  diffuv::measure_distortion(m, m.points(), faces, uv, &backward);
   ASSERT_EQ(forward.size(), faces.size());
   ASSERT_EQ(backward.size(), faces.size());
   for(std::size_t i = 0; i < faces.size(); ++i) {
@@ -442,13 +442,13 @@ TEST(Metrics, PerFaceFollowsRangeOrder)
 
   // A sub-range is a chart of its own, normalised by its own areas.
   std::vector<diffuv::Triangle_distortion> one;
-  const auto s = diffuv::measure_distortion(m, std::vector<Face>{Face(7)}, m.points(), uv, &one);
+  const auto s = diffuv::measure_distortion(m, m.points(), std::vector<Face>{Face(7)}, uv, &one);
   EXPECT_EQ(s.faces, 1u);
   ASSERT_EQ(one.size(), 1u);
   EXPECT_EQ(one[0].angle, forward[7].angle);
   EXPECT_NEAR(one[0].area, 1, tol);
 
-  const auto empty = diffuv::measure_distortion(m, std::vector<Face>{}, m.points(), uv, &one);
+  const auto empty = diffuv::measure_distortion(m, m.points(), std::vector<Face>{}, uv, &one);
   EXPECT_EQ(empty.faces, 0u);
   EXPECT_TRUE(one.empty());
   EXPECT_EQ(empty.angle_mean, 0);
@@ -460,7 +460,7 @@ TEST(Metrics, NefertitiMeanValueChartIsInjective)
   ASSERT_EQ(m.number_of_faces(), 562u);
   Uv_map uv = parameterize_mvc(m);
   std::vector<diffuv::Triangle_distortion> per_face;
-  const auto s = diffuv::measure_distortion(m, all_faces(m), m.points(), uv, &per_face);
+  const auto s = diffuv::measure_distortion(m, m.points(), all_faces(m), uv, &per_face);
   EXPECT_EQ(s.faces, 562u);
   EXPECT_EQ(s.flipped, 0u);
   EXPECT_EQ(s.degenerate, 0u);
@@ -507,7 +507,7 @@ TEST(Metrics, BoxOverlapCountEqualsBruteForceOnFoldedChart)
   }
 
   const std::vector<Face> faces = all_faces(m);
-  const auto s = diffuv::measure_distortion(m, faces, m.points(), uv);
+  const auto s = diffuv::measure_distortion(m, m.points(), faces, uv);
   ASSERT_EQ(s.degenerate, 0u); // the brute force below skips nothing
   std::vector<std::array<Point_2, 3>> tri;
   for(Face f : faces) tri.push_back(uv_triangle(m, f, uv));
@@ -537,9 +537,9 @@ TEST(Distortion, TwoHalvesCombineIntoTheWhole)
   const auto uv_map = boost::make_iterator_property_map(uv.begin(), get(boost::vertex_index, mesh));
   const std::vector<Mesh::Face_index> all(faces(mesh).begin(), faces(mesh).end());
   const std::vector<Mesh::Face_index> first(all.begin(), all.begin() + all.size() / 3), second(all.begin() + all.size() / 3, all.end());
-  const auto whole = diffuv::measure_distortion(mesh, all, mesh.points(), uv_map);
-  const auto a = diffuv::measure_distortion(mesh, first, mesh.points(), uv_map);
-  const auto b = diffuv::measure_distortion(mesh, second, mesh.points(), uv_map);
+  const auto whole = diffuv::measure_distortion(mesh, mesh.points(), all, uv_map);
+  const auto a = diffuv::measure_distortion(mesh, mesh.points(), first, uv_map);
+  const auto b = diffuv::measure_distortion(mesh, mesh.points(), second, uv_map);
   const auto sum = diffuv::combined(a, b);
   EXPECT_EQ(sum.faces, whole.faces);
   EXPECT_EQ(sum.degenerate, whole.degenerate);

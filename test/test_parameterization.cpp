@@ -180,7 +180,9 @@ TEST(DiffusionCoordinates, FlatGridGivesTheGridCoordinates)
   const Mesh grid = make_grid(nx, ny);
   Atlas atlas(grid);
   Sides sides;
-  ASSERT_TRUE(diffuv::parameterize_disc(grid, grid_corners(nx, ny), atlas, &sides).ok());
+  diffuv::Disc_parameterization_report<Mesh> disc_report;
+  ASSERT_TRUE(diffuv::parameterize_disc(grid, grid.points(), grid_corners(nx, ny), atlas, {}, &disc_report).ok());
+  sides = disc_report.sides;
   auto uv = atlas.vertex_uv_map();
   for(std::size_t j = 0; j <= ny; ++j)
     for(std::size_t i = 0; i <= nx; ++i) {
@@ -195,7 +197,7 @@ TEST(DiffusionCoordinates, ChartsAreNotMirrored)
   const std::size_t n = 10;
   const Mesh grid = make_grid(n, n);
   Atlas atlas(grid);
-  ASSERT_TRUE(diffuv::parameterize_disc(grid, grid_corners(n, n), atlas).ok());
+  ASSERT_TRUE(diffuv::parameterize_disc(grid, grid.points(), grid_corners(n, n), atlas).ok());
   auto uv = atlas.vertex_uv_map();
   for(auto f : faces(grid))
     EXPECT_GT(signed_uv_area(grid, f, [&](vertex_descriptor v) { return get(uv, v); }), 0.);
@@ -226,10 +228,8 @@ TEST(DiffusionCoordinates, EveryDistanceBackendGivesTheGridCoordinatesOnAFlatGri
   const std::size_t nx = 10, ny = 6;
   const Mesh grid = make_grid(nx, ny);
   Atlas fmm(grid), exact(grid);
-  ASSERT_TRUE(diffuv::parameterize_disc(grid, grid_corners(nx, ny), fmm, nullptr, diffuv::Fibonacci_heap_tag(),
-                                        diffuv::Fmm_distance_tag()).ok());
-  ASSERT_TRUE(diffuv::parameterize_disc(grid, grid_corners(nx, ny), exact, nullptr, diffuv::Fibonacci_heap_tag(),
-                                        diffuv::Exact_distance_tag()).ok());
+  ASSERT_TRUE(diffuv::parameterize_disc<diffuv::Fmm_distance_tag>(grid, grid.points(), grid_corners(nx, ny), fmm).ok());
+  ASSERT_TRUE(diffuv::parameterize_disc<diffuv::Exact_distance_tag>(grid, grid.points(), grid_corners(nx, ny), exact).ok());
   for(std::size_t j = 0; j <= ny; ++j)
     for(std::size_t i = 0; i <= nx; ++i) {
       for(const Atlas* a : {&fmm, &exact}) {
@@ -246,10 +246,10 @@ TEST(DiffusionCoordinates, FastMarchingRemovesTheCollapsedTrianglesOfEdgePaths)
   // distortion up to 1e5); distances through triangles do not.
   const Mesh& mesh = cgal_mesh("mushroom.off");
   Atlas graph(mesh), fmm(mesh);
-  ASSERT_TRUE(diffuv::parameterize_disc(mesh, {}, graph, nullptr, diffuv::Fibonacci_heap_tag(), diffuv::Graph_distance_tag()).ok());
-  ASSERT_TRUE(diffuv::parameterize_disc(mesh, {}, fmm, nullptr, diffuv::Fibonacci_heap_tag(), diffuv::Fmm_distance_tag()).ok());
-  const auto dg = diffuv::measure_distortion(mesh, faces(mesh), mesh.points(), graph.chart_uv_map(0));
-  const auto df = diffuv::measure_distortion(mesh, faces(mesh), mesh.points(), fmm.chart_uv_map(0));
+  ASSERT_TRUE(diffuv::parameterize_disc<diffuv::Graph_distance_tag>(mesh, mesh.points(), {}, graph).ok());
+  ASSERT_TRUE(diffuv::parameterize_disc<diffuv::Fmm_distance_tag>(mesh, mesh.points(), {}, fmm).ok());
+  const auto dg = diffuv::measure_distortion(mesh, mesh.points(), faces(mesh), graph.chart_uv_map(0));
+  const auto df = diffuv::measure_distortion(mesh, mesh.points(), faces(mesh), fmm.chart_uv_map(0));
   EXPECT_GT(dg.angle_max, 100.);
   EXPECT_LT(df.angle_max, 10.);
   EXPECT_LT(df.angle_mean, dg.angle_mean);
@@ -260,8 +260,8 @@ TEST(DiffusionCoordinates, AllHeapsGiveTheSameCoordinates)
 {
   const Mesh& mesh = cgal_mesh("nefertiti.off");
   Atlas fib(mesh), pairing(mesh);
-  ASSERT_TRUE(diffuv::parameterize_disc(mesh, {}, fib, nullptr, diffuv::Fibonacci_heap_tag()).ok());
-  ASSERT_TRUE(diffuv::parameterize_disc(mesh, {}, pairing, nullptr, diffuv::Quaternary_heap_tag()).ok());
+  ASSERT_TRUE(diffuv::parameterize_disc(mesh, mesh.points(), {}, fib).ok());
+  ASSERT_TRUE((diffuv::parameterize_disc<diffuv::Default_distance_tag, diffuv::Quaternary_heap_tag>(mesh, mesh.points(), {}, pairing).ok()));
   EXPECT_EQ(fib.chart(0).uv, pairing.chart(0).uv);
 }
 
@@ -279,7 +279,7 @@ TEST(DiffusionCoordinates, EmptySideUnreachableAndOppositeSides)
   sides.v2 = {2, 4};
   std::vector<Point_2> uv(6);
   auto map = boost::make_iterator_property_map(uv.begin(), get(boost::vertex_index, g));
-  diffuv::Diffusion_coordinates<Graph> coordinates(g);
+  diffuv::Diffusion_coordinates<Graph, diffuv::Graph_distance_tag> coordinates(g);
   const diffuv::Status s = coordinates.compute(sides, get(boost::edge_weight, g), map);
   EXPECT_EQ(s.code, diffuv::Status_code::unreachable_vertices);
   EXPECT_EQ(s.detail, "1 vertices");
@@ -305,7 +305,9 @@ TEST(ParameterizeDisc, NefertitiWithCgalSquareCorners)
   ASSERT_EQ(corners.size(), 4u);
   Atlas atlas(mesh);
   Sides sides;
-  ASSERT_TRUE(diffuv::parameterize_disc(mesh, corners, atlas, &sides).ok());
+  diffuv::Disc_parameterization_report<Mesh> disc_report;
+  ASSERT_TRUE(diffuv::parameterize_disc(mesh, mesh.points(), corners, atlas, {}, &disc_report).ok());
+  sides = disc_report.sides;
   EXPECT_EQ(sides.corners[0], corners[0]);
   auto uv = atlas.vertex_uv_map();
   const Point_2 square[4] = {Point_2(0, 0), Point_2(1, 0), Point_2(1, 1), Point_2(0, 1)};
@@ -329,7 +331,7 @@ TEST(ParameterizeDisc, RealMeshesAreMostlyCounterClockwise)
   for(const char* name : {"nefertiti.off", "mushroom.off", "three_peaks.off"}) {
     const Mesh& mesh = cgal_mesh(name);
     Atlas atlas(mesh);
-    ASSERT_TRUE(diffuv::parameterize_disc(mesh, {}, atlas).ok()) << name;
+    ASSERT_TRUE(diffuv::parameterize_disc(mesh, mesh.points(), {}, atlas).ok()) << name;
     auto uv = atlas.vertex_uv_map();
     std::size_t positive = 0;
     for(auto f : faces(mesh))
@@ -356,8 +358,8 @@ TEST(ParameterizeDisc, ShufflingTheVertexOrderChangesNothing)
     shuffled.add_face(fv);
   }
   Atlas a(mesh), b(shuffled);
-  ASSERT_TRUE(diffuv::parameterize_disc(mesh, {}, a).ok());
-  ASSERT_TRUE(diffuv::parameterize_disc(shuffled, {}, b).ok());
+  ASSERT_TRUE(diffuv::parameterize_disc(mesh, mesh.points(), {}, a).ok());
+  ASSERT_TRUE(diffuv::parameterize_disc(shuffled, shuffled.points(), {}, b).ok());
   auto uva = a.vertex_uv_map();
   auto uvb = b.vertex_uv_map();
   for(auto v : vertices(mesh)) {
@@ -369,11 +371,11 @@ TEST(ParameterizeDisc, ShufflingTheVertexOrderChangesNothing)
 TEST(ParameterizeDisc, FailuresLeaveTheAtlasEmpty)
 {
   Atlas atlas(cgal_mesh("cow.off"));
-  EXPECT_EQ(diffuv::parameterize_disc(cgal_mesh("cow.off"), {}, atlas).code, diffuv::Status_code::no_border);
+  EXPECT_EQ(diffuv::parameterize_disc(cgal_mesh("cow.off"), get(CGAL::vertex_point, cgal_mesh("cow.off")), {}, atlas).code, diffuv::Status_code::no_border);
   EXPECT_EQ(atlas.number_of_charts(), 0u);
   const Mesh& mesh = cgal_mesh("nefertiti.off");
   Atlas other(mesh);
-  EXPECT_EQ(diffuv::parameterize_disc(mesh, {vertex_descriptor(133), vertex_descriptor(8)}, other).code,
+  EXPECT_EQ(diffuv::parameterize_disc(mesh, mesh.points(), {vertex_descriptor(133), vertex_descriptor(8)}, other).code,
             diffuv::Status_code::corner_count);
   EXPECT_EQ(other.number_of_charts(), 0u);
 }

@@ -5,7 +5,7 @@
 #include <diffuv/parameterization/parameterize_disc.h>
 #include <diffuv/parameterization/parameterize_patches.h>
 #include <diffuv/layout/disc_patches.h>
-#include <diffuv/patches/flat_faces.h>
+#include <diffuv/patches/flat_triangles.h>
 #include <diffuv/graph/patch_graph.h>
 #include <diffuv/patches/region_sides.h>
 #include <diffuv/patches/split_patches.h>
@@ -75,7 +75,7 @@ TEST(Patches, ComponentsOfLabelsInCanonicalOrder)
   // Make block 8 larger by also relabelling block 7 -> 20 (adjacent to 8: one component of 2 blocks).
   for(auto f : faces(grid))
     if(labels[f.idx()] == 8 || labels[f.idx()] == 7) labels[f.idx()] = 20;
-  const Seg seg = diffuv::patches_from_labels(grid, labels, grid.points());
+  const Seg seg = diffuv::patches_from_labels(grid, grid.points(), labels);
   ASSERT_EQ(seg.number_of_patches(), 8u); // labels 1..6 and two components of 20
   for(std::size_t p = 0; p < 6; ++p) EXPECT_EQ(seg.patch_label[p], int(p) + 1);
   EXPECT_EQ(seg.patch_label[6], 20);
@@ -89,12 +89,12 @@ TEST(Patches, ComponentsOfLabelsInCanonicalOrder)
 TEST(Patches, BordersBetweenRegionsAreTheSides)
 {
   const Mesh grid = make_grid(9, 9);
-  const Seg seg = diffuv::patches_from_labels(grid, block_labels(grid), grid.points());
+  const Seg seg = diffuv::patches_from_labels(grid, grid.points(), block_labels(grid));
   const std::size_t centre = 4; // label 4: neighbours 1 (below), 5 (right), 7 (above), 3 (left)
   ASSERT_EQ(seg.patch_label[centre], 4);
   diffuv::Four_sides<vertex_descriptor> sides;
   diffuv::Side_report report;
-  ASSERT_TRUE(diffuv::region_sides(grid, seg, centre, grid.points(), sides, &report).ok());
+  ASSERT_TRUE(diffuv::region_sides(grid, grid.points(), seg, centre, sides, {}, &report).ok());
   EXPECT_EQ(report.runs, 4u);
   EXPECT_EQ(report.merged + report.split, 0u);
   // Junctions are the block's corners; the side towards the smallest label (1, below) is v1.
@@ -106,7 +106,7 @@ TEST(Patches, BordersBetweenRegionsAreTheSides)
 
   // A corner block: two neighbours and the mesh border (first in the order).
   diffuv::Four_sides<vertex_descriptor> corner_sides;
-  ASSERT_TRUE(diffuv::region_sides(grid, seg, 0, grid.points(), corner_sides, &report).ok());
+  ASSERT_TRUE(diffuv::region_sides(grid, grid.points(), seg, 0, corner_sides, {}, &report).ok());
   EXPECT_EQ(report.runs, 3u); // border, label 1, label 3 -> the border run is split
   EXPECT_EQ(report.split, 1u);
 }
@@ -117,7 +117,7 @@ TEST(Patches, SideOrderDependsOnLabelsNotOnVertexOrFaceOrder)
   // faces shuffled must give every vertex the same (patch, u, v).
   const Mesh& cow = cgal_mesh("cow.off");
   std::vector<int> labels(num_faces(cow), 0);
-  diffuv::voronoi_discs(cow, std::vector<face_descriptor>(faces(cow).begin(), faces(cow).end()), cow.points(), labels, 0);
+  diffuv::voronoi_discs(cow, cow.points(), std::vector<face_descriptor>(faces(cow).begin(), faces(cow).end()), labels, 0);
 
   std::mt19937 rng(11);
   std::vector<std::size_t> vperm(num_vertices(cow)), fperm(num_faces(cow));
@@ -139,12 +139,12 @@ TEST(Patches, SideOrderDependsOnLabelsNotOnVertexOrFaceOrder)
   }
 
   Seg a, b;
-  ASSERT_TRUE(diffuv::disc_patches(cow, labels, cow.points(), a).ok());
-  ASSERT_TRUE(diffuv::disc_patches(shuffled, shuffled_labels, shuffled.points(), b).ok());
+  ASSERT_TRUE(diffuv::disc_patches(cow, cow.points(), labels, a).ok());
+  ASSERT_TRUE(diffuv::disc_patches(shuffled, shuffled.points(), shuffled_labels, b).ok());
   ASSERT_EQ(a.number_of_patches(), b.number_of_patches());
   diffuv::Uv_atlas<Mesh> atlas_a(cow), atlas_b(shuffled);
-  const auto ra = diffuv::parameterize_patches(cow, a, cow.points(), atlas_a);
-  const auto rb = diffuv::parameterize_patches(shuffled, b, shuffled.points(), atlas_b);
+  const auto ra = diffuv::parameterize_patches(cow, cow.points(), a, atlas_a);
+  const auto rb = diffuv::parameterize_patches(shuffled, shuffled.points(), b, atlas_b);
   std::size_t compared = 0;
   for(std::size_t p = 0; p < a.number_of_patches(); ++p) {
     ASSERT_EQ(a.patch_label[p], b.patch_label[p]);
@@ -165,7 +165,7 @@ TEST(Patches, FastDiscCheckAgreesWithTheFilteredGraphCheck)
 {
   // check_patch_disc works on the patch alone; check_disc on a Face_filtered_graph is the reference.
   auto compare = [](const Mesh& m, const std::vector<int>& labels) {
-    const Seg seg = diffuv::patches_from_labels(m, labels, m.points());
+    const Seg seg = diffuv::patches_from_labels(m, m.points(), labels);
     std::size_t bad = 0;
     for(std::size_t p = 0; p < seg.number_of_patches(); ++p) {
       const CGAL::Face_filtered_graph<Mesh> patch(m, seg.patch_faces[p]);
@@ -208,9 +208,9 @@ TEST(Patches, SmallPiecesAreMergedIntoANeighbour)
   const Mesh grid = make_grid(6, 6);
   std::vector<int> labels(num_faces(grid), 0);
   labels[17] = 5; // a lone triangle: three boundary vertices, cannot have four sides
-  Seg seg = diffuv::patches_from_labels(grid, labels, grid.points());
+  Seg seg = diffuv::patches_from_labels(grid, grid.points(), labels);
   ASSERT_EQ(seg.number_of_patches(), 2u);
-  EXPECT_EQ(diffuv::merge_small_patches(grid, labels, seg, grid.points()), 1u);
+  EXPECT_EQ(diffuv::merge_small_patches(grid, grid.points(), labels, seg), 1u);
   EXPECT_EQ(seg.number_of_patches(), 1u);
   EXPECT_EQ(labels[17], 0);
 }
@@ -219,7 +219,7 @@ TEST(Patches, NonDiscRegionsAreCutIntoDiscsOrReported)
 {
   const Mesh& m = sphere();
   const std::vector<int> labels = banded_labels(m, 0.25); // caps 0 and 2 around band 1 (an annulus)
-  Seg raw = diffuv::patches_from_labels(m, labels, m.points());
+  Seg raw = diffuv::patches_from_labels(m, m.points(), labels);
   ASSERT_EQ(raw.number_of_patches(), 3u);
   EXPECT_EQ(diffuv::check_patch_disc(m, raw, 1).code, diffuv::Status_code::several_borders);
 
@@ -228,7 +228,7 @@ TEST(Patches, NonDiscRegionsAreCutIntoDiscsOrReported)
   strict.strict = true;
   Seg s;
   diffuv::Patching_report sr;
-  EXPECT_EQ(diffuv::disc_patches(m, labels, m.points(), s, strict, &sr).code, diffuv::Status_code::several_borders);
+  EXPECT_EQ(diffuv::disc_patches(m, m.points(), labels, s, strict, &sr).code, diffuv::Status_code::several_borders);
   ASSERT_EQ(sr.not_discs.size(), 1u);
   EXPECT_EQ(s.patch_label[sr.not_discs.front()], 1);
 
@@ -237,8 +237,8 @@ TEST(Patches, NonDiscRegionsAreCutIntoDiscsOrReported)
   Seg seg;
   diffuv::Patching_report report;
   diffuv::Patching_options cut;
-  cut.hand_off_flat_faces = false;
-  ASSERT_TRUE(diffuv::disc_patches(m, labels, m.points(), seg, cut, &report).ok());
+  cut.hand_off_flat_triangles = false;
+  ASSERT_TRUE(diffuv::disc_patches(m, m.points(), labels, seg, cut, &report).ok());
   EXPECT_EQ(report.cut, 1u);
   std::size_t band_faces = 0, pieces = 0;
   for(std::size_t p = 0; p < seg.number_of_patches(); ++p) {
@@ -261,18 +261,18 @@ TEST(Patches, CapsAreSplitInTwo)
   const std::vector<int> banded = banded_labels(m, 0.3);
   std::vector<int> labels(banded.size());
   for(std::size_t i = 0; i < banded.size(); ++i) labels[i] = banded[i] == 0 ? 0 : 1;
-  Seg raw = diffuv::patches_from_labels(m, labels, m.points());
+  Seg raw = diffuv::patches_from_labels(m, m.points(), labels);
   ASSERT_EQ(raw.number_of_patches(), 2u);
-  EXPECT_TRUE(diffuv::is_cap(m, raw, 0, m.points()));
-  EXPECT_TRUE(diffuv::is_cap(m, raw, 1, m.points()));
+  EXPECT_TRUE(diffuv::is_cap(m, m.points(), raw, 0));
+  EXPECT_TRUE(diffuv::is_cap(m, m.points(), raw, 1));
 
   // The Voronoi layout's rule (the four-sided layout cuts every region into cells).
   Seg seg;
   diffuv::Patching_report report;
   diffuv::Patching_options split;
   split.layout = diffuv::Patch_layout::voronoi;
-  split.hand_off_flat_faces = false;  // to count the faces of each cap's halves
-  ASSERT_TRUE(diffuv::disc_patches(m, labels, m.points(), seg, split, &report).ok());
+  split.hand_off_flat_triangles = false;  // to count the faces of each cap's halves
+  ASSERT_TRUE(diffuv::disc_patches(m, m.points(), labels, seg, split, &report).ok());
   EXPECT_EQ(report.caps_split, 2u);
   ASSERT_EQ(seg.number_of_patches(), 4u);
   const std::vector<int> expected_labels = {0, 0, 1, 1}, expected_parts = {1, 2, 1, 2};
@@ -280,7 +280,7 @@ TEST(Patches, CapsAreSplitInTwo)
   EXPECT_EQ(seg.patch_part, expected_parts);
   for(std::size_t p = 0; p < 4; ++p) {
     EXPECT_TRUE(diffuv::check_patch_disc(m, seg, p).ok()) << p;
-    EXPECT_FALSE(diffuv::is_cap(m, seg, p, m.points())) << p;
+    EXPECT_FALSE(diffuv::is_cap(m, m.points(), seg, p)) << p;
   }
   EXPECT_EQ(seg.patch_faces[0].size() + seg.patch_faces[1].size(), raw.patch_faces[0].size());
 
@@ -289,30 +289,32 @@ TEST(Patches, CapsAreSplitInTwo)
   keep.layout = diffuv::Patch_layout::voronoi;
   keep.split_caps = false;
   Seg whole;
-  ASSERT_TRUE(diffuv::disc_patches(m, labels, m.points(), whole, keep).ok());
+  ASSERT_TRUE(diffuv::disc_patches(m, m.points(), labels, whole, keep).ok());
   EXPECT_EQ(whole.number_of_patches(), 2u);
   diffuv::Four_sides<vertex_descriptor> sides;
   diffuv::Side_report side_report;
-  ASSERT_TRUE(diffuv::region_sides(m, whole, 0, m.points(), sides, &side_report).ok());
+  ASSERT_TRUE(diffuv::region_sides(m, m.points(), whole, 0, sides, {}, &side_report).ok());
   EXPECT_TRUE(side_report.equal_arcs);
 
   // A disc mesh as one patch gets the same corners as parameterize_disc(): the
   // sharpest boundary vertex at (0,0), then equal arcs.
   const Mesh& disc = cgal_mesh("nefertiti.off");
   Seg one;
-  ASSERT_TRUE(diffuv::disc_patches(disc, {}, disc.points(), one).ok());
+  ASSERT_TRUE(diffuv::disc_patches(disc, disc.points(), {}, one).ok());
   ASSERT_EQ(one.number_of_patches(), 1u);
   diffuv::Four_sides<vertex_descriptor> by_region, by_disc;
-  ASSERT_TRUE(diffuv::region_sides(disc, one, 0, disc.points(), by_region).ok());
+  ASSERT_TRUE(diffuv::region_sides(disc, disc.points(), one, 0, by_region).ok());
   diffuv::Uv_atlas<Mesh> atlas(disc);
-  ASSERT_TRUE(diffuv::parameterize_disc(disc, {}, atlas, &by_disc).ok());
+  diffuv::Disc_parameterization_report<Mesh> disc_report;
+  ASSERT_TRUE(diffuv::parameterize_disc(disc, disc.points(), {}, atlas, {}, &disc_report).ok());
+  by_disc = disc_report.sides;
   EXPECT_EQ(by_region.corners, by_disc.corners);
 }
 
 // Runs of neighbours (junctions) along the one boundary loop of patch p.
 std::size_t runs_of(const Mesh& m, const Seg& seg, std::size_t p)
 {
-  const auto loops = diffuv::patch_loops(m, seg, p, m.points());
+  const auto loops = diffuv::patch_loops(m, m.points(), seg, p);
   EXPECT_EQ(loops.size(), 1u);
   const auto& nb = loops.front().neighbour;
   std::size_t runs = 0;
@@ -324,7 +326,7 @@ std::size_t runs_of(const Mesh& m, const Seg& seg, std::size_t p)
 // vertices in one face of p), which are flat unless a corner is there.
 std::size_t needed_corners(const Mesh& m, const Seg& seg, std::size_t p)
 {
-  const auto loop = diffuv::patch_loops(m, seg, p, m.points()).front();
+  const auto loop = diffuv::patch_loops(m, m.points(), seg, p).front();
   const std::size_t n = loop.vertices.size();
   std::size_t needed = 0;
   for(std::size_t i = 0; i < n; ++i) {
@@ -353,7 +355,7 @@ TEST(Patches, APatchNeedingManyCornersIsCutBetweenJunctions)
       const double turn = (std::atan2(y, x) + CGAL_PI) / (2 * CGAL_PI);  // in [0, 1]
       labels[f.idx()] = 1 + std::min<int>(int(k) - 1, int(turn * double(k)));
     }
-    Seg seg = diffuv::patches_from_labels(grid, labels, grid.points());
+    Seg seg = diffuv::patches_from_labels(grid, grid.points(), labels);
     ASSERT_EQ(seg.patch_label.front(), 0);
     ASSERT_EQ(runs_of(grid, seg, 0), k);
     const std::size_t needed = needed_corners(grid, seg, 0);
@@ -367,9 +369,9 @@ TEST(Patches, APatchNeedingManyCornersIsCutBetweenJunctions)
     // arc they cut off, which most cuts across this square are).
     const double any_length = std::numeric_limits<double>::infinity();
     Seg unchanged = seg;
-    EXPECT_EQ(diffuv::split_at_junctions(grid, unchanged, 0, grid.points(), 0.01), 1u);
+    EXPECT_EQ(diffuv::split_at_junctions(grid, grid.points(), unchanged, 0, 0.01), 1u);
     EXPECT_EQ(unchanged.face_patch, seg.face_patch);
-    const std::size_t pieces = diffuv::split_at_junctions(grid, seg, 0, grid.points(), any_length);
+    const std::size_t pieces = diffuv::split_at_junctions(grid, grid.points(), seg, 0, any_length);
     // Each cut makes its two ends corners of both pieces; every piece ends
     // with three or four, so the fewest pieces are ceil((needed - 2) / 2).
     EXPECT_EQ(pieces, (needed - 1) / 2);
@@ -387,7 +389,7 @@ TEST(Patches, APatchNeedingManyCornersIsCutBetweenJunctions)
       // Its corners are its junctions: no run is merged into another.
       diffuv::Four_sides<vertex_descriptor> sides;
       diffuv::Side_report report;
-      ASSERT_TRUE(diffuv::region_sides(grid, seg, p, grid.points(), sides, &report).ok());
+      ASSERT_TRUE(diffuv::region_sides(grid, grid.points(), seg, p, sides, {}, &report).ok());
       EXPECT_EQ(report.merged, 0u);
     }
     EXPECT_EQ(covered, block);
@@ -398,7 +400,7 @@ TEST(Patches, APatchNeedingManyCornersIsCutBetweenJunctions)
     // A piece that needs four corners or fewer is left as it is.
     for(std::size_t p = 0; p < pieces; ++p) {
       const Seg before = seg;
-      EXPECT_EQ(diffuv::split_at_junctions(grid, seg, p, grid.points(), any_length), 1u) << "piece " << p;
+      EXPECT_EQ(diffuv::split_at_junctions(grid, grid.points(), seg, p, any_length), 1u) << "piece " << p;
       EXPECT_EQ(seg.face_patch, before.face_patch);
     }
   }
@@ -410,11 +412,11 @@ void expect_everything_mapped(const std::string& name)
   const Mesh& m = cgal_mesh(name);
   Seg seg;
   diffuv::Patching_report report;
-  ASSERT_TRUE(diffuv::disc_patches(m, {}, m.points(), seg, diffuv::Patching_options(), &report).ok()) << name;
+  ASSERT_TRUE(diffuv::disc_patches(m, m.points(), {}, seg, diffuv::Patching_options(), &report).ok()) << name;
   EXPECT_TRUE(report.automatic);
   EXPECT_GT(seg.number_of_patches(), 1u);
   diffuv::Uv_atlas<Mesh> atlas(m);
-  const auto results = diffuv::parameterize_patches(m, seg, m.points(), atlas);
+  const auto results = diffuv::parameterize_patches(m, m.points(), seg, atlas);
   for(std::size_t p = 0; p < results.size(); ++p) ASSERT_TRUE(results[p].status.ok()) << name << " patch " << p;
   for(auto v : vertices(m)) {
     auto e = atlas.entries(v);
@@ -432,10 +434,10 @@ TEST(AutomaticPatches, CowManAndGenusThreeElephantAreFullyMapped)
 }
 
 // The faces of patch p with all three vertices on one side, counted naively.
-std::size_t flat_faces_by_search(const Mesh& m, const Seg& seg, std::size_t p)
+std::size_t flat_triangles_by_search(const Mesh& m, const Seg& seg, std::size_t p)
 {
   diffuv::Four_sides<vertex_descriptor> sides;
-  if(!diffuv::region_sides(m, seg, p, m.points(), sides).ok()) return std::numeric_limits<std::size_t>::max();
+  if(!diffuv::region_sides(m, m.points(), seg, p, sides).ok()) return std::numeric_limits<std::size_t>::max();
   std::size_t flat = 0;
   for(auto f : seg.patch_faces[p])
     for(const auto* side : {&sides.u1, &sides.u2, &sides.v1, &sides.v2}) {
@@ -460,11 +462,11 @@ TEST(AutomaticPatches, CornersAloneLeaveNoFlatFace)
   for(const char* name : {"man.off", "camel.off", "armadillo.off", "dino.off"}) {
     const Mesh& m = cgal_mesh(name);
     diffuv::Patching_options keep;
-    keep.hand_off_flat_faces = false;
+    keep.hand_off_flat_triangles = false;
     Seg kept;
-    ASSERT_TRUE(diffuv::disc_patches(m, {}, m.points(), kept, keep).ok()) << name;
+    ASSERT_TRUE(diffuv::disc_patches(m, m.points(), {}, kept, keep).ok()) << name;
     std::size_t flat = 0;
-    for(std::size_t p = 0; p < kept.number_of_patches(); ++p) flat += flat_faces_by_search(m, kept, p);
+    for(std::size_t p = 0; p < kept.number_of_patches(); ++p) flat += flat_triangles_by_search(m, kept, p);
     EXPECT_EQ(flat, 0u) << name;
   }
 }
@@ -472,17 +474,17 @@ TEST(AutomaticPatches, CornersAloneLeaveNoFlatFace)
 // Where no corners can help (a small fallback patch with more ears than
 // corners, on anchor), the face is handed to a neighbouring patch: only
 // handed faces change patch, each to a patch it touched across an edge, never
-// next to a quad of the layout, and no flat face is left.
+// next to a quad of the layout, and no flat triangle is left.
 TEST(AutomaticPatches, FlatFacesNoCornersCanMendAreHandedToANeighbour)
 {
   const Mesh& m = cgal_mesh("anchor.off");
   diffuv::Patching_options keep;
-  keep.hand_off_flat_faces = false;
+  keep.hand_off_flat_triangles = false;
   Seg kept, handed;
   diffuv::Patching_report kept_report, handed_report;
-  ASSERT_TRUE(diffuv::disc_patches(m, {}, m.points(), kept, keep, &kept_report).ok());
-  ASSERT_TRUE(diffuv::disc_patches(m, {}, m.points(), handed, diffuv::Patching_options(), &handed_report).ok());
-  EXPECT_EQ(kept_report.flat_faces_handed, 0u);
+  ASSERT_TRUE(diffuv::disc_patches(m, m.points(), {}, kept, keep, &kept_report).ok());
+  ASSERT_TRUE(diffuv::disc_patches(m, m.points(), {}, handed, diffuv::Patching_options(), &handed_report).ok());
+  EXPECT_EQ(kept_report.flat_triangles_handed, 0u);
   ASSERT_EQ(kept.number_of_patches(), handed.number_of_patches());
 
   std::size_t changed = 0;
@@ -499,23 +501,23 @@ TEST(AutomaticPatches, FlatFacesNoCornersCanMendAreHandedToANeighbour)
     }
     EXPECT_TRUE(touched) << "face " << f;
   }
-  EXPECT_EQ(changed, handed_report.flat_faces_handed);
+  EXPECT_EQ(changed, handed_report.flat_triangles_handed);
   EXPECT_GE(changed, 1u);
 
   std::size_t flat_before = 0, flat_after = 0;
   for(std::size_t p = 0; p < kept.number_of_patches(); ++p) {
-    flat_before += flat_faces_by_search(m, kept, p);
+    flat_before += flat_triangles_by_search(m, kept, p);
     ASSERT_TRUE(diffuv::check_patch_disc(m, handed, p).ok()) << "patch " << p;
-    flat_after += flat_faces_by_search(m, handed, p);
+    flat_after += flat_triangles_by_search(m, handed, p);
   }
   EXPECT_GT(flat_before, 0u) << "the case this test is about is gone";
   EXPECT_EQ(flat_after, 0u);
 
   diffuv::Uv_atlas<Mesh> atlas(m);
-  const auto results = diffuv::parameterize_patches(m, handed, m.points(), atlas);
+  const auto results = diffuv::parameterize_patches(m, m.points(), handed, atlas);
   for(std::size_t p = 0; p < results.size(); ++p) {
     ASSERT_TRUE(results[p].status.ok()) << "patch " << p;
-    EXPECT_EQ(results[p].repair.forced_degenerate, 0u) << "patch " << p;
+    EXPECT_EQ(results[p].repair.flat_triangles, 0u) << "patch " << p;
     EXPECT_EQ(results[p].repair.remaining_folded_faces, 0u) << "patch " << p;
   }
 }
@@ -525,8 +527,8 @@ TEST(AutomaticPatches, DeterministicAndIndependentOfVertexAndFaceOrder)
   const Mesh& cow = cgal_mesh("cow.off");
   const std::vector<face_descriptor> all(faces(cow).begin(), faces(cow).end());
   std::vector<int> first(num_faces(cow), -1), second(num_faces(cow), -1);
-  diffuv::voronoi_discs(cow, all, cow.points(), first, 0);
-  diffuv::voronoi_discs(cow, all, cow.points(), second, 0);
+  diffuv::voronoi_discs(cow, cow.points(), all, first, 0);
+  diffuv::voronoi_discs(cow, cow.points(), all, second, 0);
   EXPECT_EQ(first, second);
 
   // Vertices stored in another order, faces in the same order: same partition.
@@ -556,13 +558,13 @@ TEST(AutomaticPatches, DeterministicAndIndependentOfVertexAndFaceOrder)
     both.add_face(fv);
   }
   std::vector<int> fourth(num_faces(both), -1), fourth_by_cow_face(num_faces(both));
-  diffuv::voronoi_discs(both, std::vector<face_descriptor>(faces(both).begin(), faces(both).end()), both.points(),
+  diffuv::voronoi_discs(both, both.points(), std::vector<face_descriptor>(faces(both).begin(), faces(both).end()),
                         fourth, 0);
   for(std::size_t k = 0; k < fperm.size(); ++k) fourth_by_cow_face[fperm[k]] = fourth[k];
 
   std::vector<int> third(num_faces(shuffled), -1);
-  diffuv::voronoi_discs(shuffled, std::vector<face_descriptor>(faces(shuffled).begin(), faces(shuffled).end()),
-                        shuffled.points(), third, 0);
+  diffuv::voronoi_discs(shuffled, shuffled.points(),
+                        std::vector<face_descriptor>(faces(shuffled).begin(), faces(shuffled).end()), third, 0);
   // Same partition up to relabelling: a one-to-one map between labels.
   auto same_partition = [](const std::vector<int>& a, const std::vector<int>& b) {
     std::map<int, int> forward, backward;
@@ -612,7 +614,7 @@ TEST(DiscPatches, EachDiscComponentStaysWhole)
   m.join(cow);
   diffuv::Segmentation<Mesh> seg;
   diffuv::Patching_report report;
-  ASSERT_TRUE(diffuv::disc_patches(m, std::vector<int>(), m.points(), seg, diffuv::Patching_options(), &report).ok());
+  ASSERT_TRUE(diffuv::disc_patches(m, m.points(), std::vector<int>(), seg, diffuv::Patching_options(), &report).ok());
   EXPECT_EQ(report.components, 2u);
   EXPECT_EQ(report.whole_components, 1u);
   EXPECT_TRUE(report.automatic);
@@ -626,7 +628,7 @@ TEST(DiscPatches, EachDiscComponentStaysWhole)
   Mesh other = diffuv_test::make_grid(4, 3);
   for(auto v : vertices(other)) other.point(v) = other.point(v) + diffuv_test::Kernel::Vector_3(0, 0, 5);
   two.join(other);
-  ASSERT_TRUE(diffuv::disc_patches(two, std::vector<int>(), two.points(), seg, diffuv::Patching_options(), &report).ok());
+  ASSERT_TRUE(diffuv::disc_patches(two, two.points(), std::vector<int>(), seg, diffuv::Patching_options(), &report).ok());
   EXPECT_EQ(report.components, 2u);
   EXPECT_EQ(report.whole_components, 2u);
   EXPECT_FALSE(report.automatic);
@@ -647,10 +649,10 @@ struct Mapped_patches {
 Mapped_patches automatic_patches(const Mesh& m)
 {
   Mapped_patches out;
-  EXPECT_TRUE(diffuv::disc_patches(m, {}, m.points(), out.seg).ok());
+  EXPECT_TRUE(diffuv::disc_patches(m, m.points(), {}, out.seg).ok());
   out.sides.resize(out.seg.number_of_patches());
   for(std::size_t p = 0; p < out.seg.number_of_patches(); ++p)
-    EXPECT_TRUE(diffuv::region_sides(m, out.seg, p, m.points(), out.sides[p]).ok());
+    EXPECT_TRUE(diffuv::region_sides(m, m.points(), out.seg, p, out.sides[p]).ok());
   return out;
 }
 
@@ -701,15 +703,14 @@ TEST(PatchGraph, PaperMethodGivesTheCoordinatesOfTheFilteredGraph)
   const Mesh& man = cgal_mesh("man.off");
   const Mapped_patches mp = automatic_patches(man);
   diffuv::Uv_atlas<Mesh> atlas(man);
-  const auto results = diffuv::parameterize_patches(man, mp.seg, man.points(), atlas, diffuv::Graph_distance_tag(),
-                                                    diffuv::Fibonacci_heap_tag(), diffuv::Repair_options{false});
+  const auto results = diffuv::parameterize_patches<diffuv::Graph_distance_tag>(man, man.points(), mp.seg, atlas, diffuv::Patch_parameterization_options{diffuv::Repair_options{false}});
   const auto lengths = diffuv::edge_length_map(man, man.points());
   for(std::size_t p = 0; p < mp.seg.number_of_patches(); ++p) {
     ASSERT_TRUE(results[p].status.ok()) << "patch " << p;
     const CGAL::Face_filtered_graph<Mesh> patch(man, mp.seg.patch_faces[p]);
     auto pindex = get(boost::vertex_index, patch);
     std::vector<Point_2> uv(num_vertices(patch));
-    ASSERT_TRUE(diffuv::diffusion_coordinates(patch, mp.sides[p], lengths,
+    ASSERT_TRUE(diffuv::diffusion_coordinates<diffuv::Graph_distance_tag>(patch, mp.sides[p], lengths,
                                               boost::make_iterator_property_map(uv.begin(), pindex))
                     .ok());
     const auto& chart = atlas.chart(results[p].chart);
@@ -733,12 +734,8 @@ TEST(ParallelPatches, ResultsDoNotDependOnTheNumberOfThreads)
     std::vector<std::vector<diffuv::Patch_result<Mesh>>> results;
     for(std::size_t threads : {1u, 2u, 0u}) {
       atlases.push_back(std::make_unique<diffuv::Uv_atlas<Mesh>>(cow));
-      results.push_back(paper ? diffuv::parameterize_patches(cow, mp.seg, cow.points(), *atlases.back(),
-                                                             diffuv::Graph_distance_tag(), diffuv::Fibonacci_heap_tag(),
-                                                             diffuv::Repair_options{false}, nullptr, true, threads)
-                              : diffuv::parameterize_patches(cow, mp.seg, cow.points(), *atlases.back(),
-                                                             diffuv::Default_distance_tag(), diffuv::Fibonacci_heap_tag(),
-                                                             diffuv::Repair_options(), nullptr, true, threads));
+      results.push_back(paper ? diffuv::parameterize_patches<diffuv::Graph_distance_tag>(cow, cow.points(), mp.seg, *atlases.back(), diffuv::Patch_parameterization_options{diffuv::Repair_options{false}, nullptr, true, threads})
+                              : diffuv::parameterize_patches<diffuv::Default_distance_tag>(cow, cow.points(), mp.seg, *atlases.back(), diffuv::Patch_parameterization_options{diffuv::Repair_options(), nullptr, true, threads}));
     }
     for(std::size_t k = 1; k < atlases.size(); ++k) {
       ASSERT_EQ(atlases[k]->number_of_charts(), atlases[0]->number_of_charts());
@@ -762,14 +759,12 @@ TEST(ParallelPatches, FourPassesOfOnePatchInParallelGiveTheSameCoordinates)
 {
   const Mesh& disc = cgal_mesh("nefertiti.off");
   Seg seg;
-  ASSERT_TRUE(diffuv::disc_patches(disc, {}, disc.points(), seg).ok());
+  ASSERT_TRUE(diffuv::disc_patches(disc, disc.points(), {}, seg).ok());
   ASSERT_EQ(seg.number_of_patches(), 1u);
   std::vector<std::unique_ptr<diffuv::Uv_atlas<Mesh>>> atlases;
   for(std::size_t threads : {1u, 2u}) {
     atlases.push_back(std::make_unique<diffuv::Uv_atlas<Mesh>>(disc));
-    const auto r = diffuv::parameterize_patches(disc, seg, disc.points(), *atlases.back(), diffuv::Graph_distance_tag(),
-                                                diffuv::Fibonacci_heap_tag(), diffuv::Repair_options{false}, nullptr,
-                                                true, threads);
+    const auto r = diffuv::parameterize_patches<diffuv::Graph_distance_tag>(disc, disc.points(), seg, *atlases.back(), diffuv::Patch_parameterization_options{diffuv::Repair_options{false}, nullptr, true, threads});
     ASSERT_TRUE(r.front().status.ok()) << threads;
   }
   EXPECT_EQ(atlases[1]->chart(0).vertices, atlases[0]->chart(0).vertices);

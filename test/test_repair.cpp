@@ -53,7 +53,7 @@ void expect_grid_back(const Mesh& grid, const std::vector<Point_2>& uv)
 
 diffuv::Distortion_summary measure(const Mesh& m, const std::vector<Point_2>& uv)
 {
-  return diffuv::measure_distortion(m, faces(m), m.points(),
+  return diffuv::measure_distortion(m, m.points(), faces(m),
                                     boost::make_iterator_property_map(uv.begin(), get(boost::vertex_index, m)));
 }
 
@@ -69,7 +69,7 @@ TEST(Repair, AFoldInAFlatGridIsRepairedExactlyAndOnlyThere)
   ASSERT_GT(measure(grid, uv).flipped, 0u);
 
   diffuv::Repair_report report;
-  ASSERT_TRUE(diffuv::repair_folds(grid, grid.points(), sides, boost::make_iterator_property_map(uv.begin(), get(boost::vertex_index, grid)), &report).ok());
+  ASSERT_TRUE(diffuv::repair_folds(grid, grid.points(), sides, boost::make_iterator_property_map(uv.begin(), get(boost::vertex_index, grid)), {}, &report).ok());
   const auto d = measure(grid, uv);
   EXPECT_EQ(d.flipped, 0u);
   EXPECT_EQ(d.overlapping_pairs, 0u);
@@ -86,7 +86,7 @@ TEST(Repair, AFoldInAFlatGridIsRepairedExactlyAndOnlyThere)
 double worst_angle(const Mesh& m, const std::vector<Point_2>& uv)
 {
   std::vector<diffuv::Triangle_distortion> per_face;
-  diffuv::measure_distortion(m, faces(m), m.points(), boost::make_iterator_property_map(uv.begin(), get(boost::vertex_index, m)),
+  diffuv::measure_distortion(m, m.points(), faces(m), boost::make_iterator_property_map(uv.begin(), get(boost::vertex_index, m)),
                              &per_face);
   double worst = 0;
   for(const auto& d : per_face) worst = std::max(worst, d.angle);
@@ -112,14 +112,14 @@ TEST(Repair, ANearFoldIsReSolvedLikeAFold)
   diffuv::Repair_options off;
   off.max_angle_distortion = 0;
   diffuv::Repair_report report;
-  ASSERT_TRUE(diffuv::repair_folds(grid, grid.points(), sides, boost::make_iterator_property_map(uv.begin(), get(boost::vertex_index, grid)), &report, off).ok());
+  ASSERT_TRUE(diffuv::repair_folds(grid, grid.points(), sides, boost::make_iterator_property_map(uv.begin(), get(boost::vertex_index, grid)), off, &report).ok());
   EXPECT_EQ(uv, pushed);
   EXPECT_EQ(report.thin_faces, 0u);
   EXPECT_EQ(report.moved_vertices, 0u);
 
   // On (the default): re-solved around the vertex only, and on a flat grid
   // the mean value solve gives the grid back (linear precision).
-  ASSERT_TRUE(diffuv::repair_folds(grid, grid.points(), sides, boost::make_iterator_property_map(uv.begin(), get(boost::vertex_index, grid)), &report).ok());
+  ASSERT_TRUE(diffuv::repair_folds(grid, grid.points(), sides, boost::make_iterator_property_map(uv.begin(), get(boost::vertex_index, grid)), {}, &report).ok());
   EXPECT_EQ(report.folded_faces, 0u);
   EXPECT_GT(report.thin_faces, 0u);
   EXPECT_EQ(report.remaining_thin_faces, 0u);
@@ -145,7 +145,7 @@ TEST(Repair, ASqueezedSideIsReSpacedByArcLength)
   ASSERT_EQ(measure(grid, uv).flipped, 0u);
   ASSERT_GT(worst_angle(grid, uv), 50.);
   diffuv::Repair_report report;
-  ASSERT_TRUE(diffuv::repair_folds(grid, grid.points(), sides, boost::make_iterator_property_map(uv.begin(), get(boost::vertex_index, grid)), &report).ok());
+  ASSERT_TRUE(diffuv::repair_folds(grid, grid.points(), sides, boost::make_iterator_property_map(uv.begin(), get(boost::vertex_index, grid)), {}, &report).ok());
   EXPECT_EQ(report.folded_faces, 0u);
   EXPECT_GT(report.thin_faces, 0u);
   EXPECT_EQ(report.remaining_thin_faces, 0u);
@@ -174,7 +174,7 @@ TEST(Repair, ValidRegionsAreKeptBitForBit)
   const std::vector<Point_2> before = uv;
   uv[grid_vertex(n, 4, 4)] = Point_2(0.2, 0.2);
   diffuv::Repair_report report;
-  ASSERT_TRUE(diffuv::repair_folds(grid, grid.points(), sides, boost::make_iterator_property_map(uv.begin(), get(boost::vertex_index, grid)), &report).ok());
+  ASSERT_TRUE(diffuv::repair_folds(grid, grid.points(), sides, boost::make_iterator_property_map(uv.begin(), get(boost::vertex_index, grid)), {}, &report).ok());
   EXPECT_TRUE(measure(grid, uv).injective());
   for(std::size_t j = 15; j < n; ++j)
     for(std::size_t i = 15; i < n; ++i) {
@@ -194,7 +194,7 @@ TEST(Repair, AScrambledMapFallsBackToTheWholePatch)
   for(std::size_t j = 1; j < n; ++j)
     for(std::size_t i = 1; i < n; ++i) uv[grid_vertex(n, i, j)] = Point_2(unit(random), unit(random));
   diffuv::Repair_report report;
-  ASSERT_TRUE(diffuv::repair_folds(grid, grid.points(), sides, boost::make_iterator_property_map(uv.begin(), get(boost::vertex_index, grid)), &report).ok());
+  ASSERT_TRUE(diffuv::repair_folds(grid, grid.points(), sides, boost::make_iterator_property_map(uv.begin(), get(boost::vertex_index, grid)), {}, &report).ok());
   EXPECT_TRUE(report.whole_patch);
   EXPECT_EQ(report.moved_vertices, (n - 1) * (n - 1));
   EXPECT_TRUE(measure(grid, uv).injective());
@@ -210,7 +210,7 @@ TEST(Repair, ASideOutOfOrderIsRespacedByArcLength)
   std::vector<Point_2> uv = grid_uv(grid);
   std::swap(uv[grid_vertex(n, 3, 0)], uv[grid_vertex(n, 4, 0)]); // side v1 runs backwards there
   diffuv::Repair_report report;
-  ASSERT_TRUE(diffuv::repair_folds(grid, grid.points(), sides, boost::make_iterator_property_map(uv.begin(), get(boost::vertex_index, grid)), &report).ok());
+  ASSERT_TRUE(diffuv::repair_folds(grid, grid.points(), sides, boost::make_iterator_property_map(uv.begin(), get(boost::vertex_index, grid)), {}, &report).ok());
   EXPECT_EQ(report.moved_border_vertices, 2u);
   EXPECT_NEAR(uv[grid_vertex(n, 3, 0)].x(), 0.3, 1e-12);
   EXPECT_NEAR(uv[grid_vertex(n, 4, 0)].x(), 0.4, 1e-12);
@@ -227,11 +227,14 @@ TEST(Repair, OffGivesThePapersRawCoordinates)
   diffuv::Repair_report report;
   diffuv::Repair_options off;
   off.enabled = false;
-  ASSERT_TRUE(diffuv::parameterize_disc(mesh, {}, raw, &sides, diffuv::Fibonacci_heap_tag(), diffuv::Graph_distance_tag(), off, &report).ok());
+  diffuv::Disc_parameterization_report<Mesh> disc_report;
+  ASSERT_TRUE(diffuv::parameterize_disc<diffuv::Graph_distance_tag>(mesh, mesh.points(), {}, raw, diffuv::Disc_parameterization_options{off}, &disc_report).ok());
+  sides = disc_report.sides;
+  report = disc_report.repair;
   EXPECT_EQ(report.moved_vertices, 0u);
-  EXPECT_GT(diffuv::measure_distortion(mesh, faces(mesh), mesh.points(), raw.vertex_uv_map()).flipped, 1000u);
+  EXPECT_GT(diffuv::measure_distortion(mesh, mesh.points(), faces(mesh), raw.vertex_uv_map()).flipped, 1000u);
   std::vector<Point_2> expected(num_vertices(mesh));
-  ASSERT_TRUE(diffuv::diffusion_coordinates(mesh, sides, diffuv::edge_length_map(mesh),
+  ASSERT_TRUE(diffuv::diffusion_coordinates<diffuv::Graph_distance_tag>(mesh, sides, diffuv::edge_length_map(mesh),
                                             boost::make_iterator_property_map(expected.begin(), get(boost::vertex_index, mesh)))
                   .ok());
   auto uv = raw.vertex_uv_map();
@@ -245,8 +248,10 @@ TEST(Repair, AMapWithoutFoldsIsNotTouched)
   diffuv::Repair_report report;
   diffuv::Repair_options off;
   off.enabled = false;
-  ASSERT_TRUE(diffuv::parameterize_disc(mesh, {}, repaired, nullptr, diffuv::Fibonacci_heap_tag(), diffuv::Fmm_distance_tag(), diffuv::Repair_options(), &report).ok());
-  ASSERT_TRUE(diffuv::parameterize_disc(mesh, {}, raw, nullptr, diffuv::Fibonacci_heap_tag(), diffuv::Fmm_distance_tag(), off).ok());
+  diffuv::Disc_parameterization_report<Mesh> disc_report;
+  ASSERT_TRUE(diffuv::parameterize_disc<diffuv::Fmm_distance_tag>(mesh, mesh.points(), {}, repaired, {}, &disc_report).ok());
+  report = disc_report.repair;
+  ASSERT_TRUE(diffuv::parameterize_disc<diffuv::Fmm_distance_tag>(mesh, mesh.points(), {}, raw, diffuv::Disc_parameterization_options{off}).ok());
   EXPECT_EQ(report.folded_faces, 0u);
   EXPECT_EQ(report.rounds, 0u);
   for(vertex_descriptor v : vertices(mesh)) EXPECT_EQ(get(repaired.vertex_uv_map(), v), get(raw.vertex_uv_map(), v));
@@ -262,15 +267,17 @@ TEST_P(Repair_on, DefaultsAreInjective)
   for(int backend = 0; backend < 2; ++backend) {
     diffuv::Uv_atlas<Mesh> atlas(mesh);
     diffuv::Repair_report report;
+    diffuv::Disc_parameterization_report<Mesh> disc_report;
     const diffuv::Status status =
-        backend == 0 ? diffuv::parameterize_disc(mesh, {}, atlas, nullptr, diffuv::Fibonacci_heap_tag(), diffuv::Default_distance_tag(), diffuv::Repair_options(), &report)
-                     : diffuv::parameterize_disc(mesh, {}, atlas, nullptr, diffuv::Fibonacci_heap_tag(), diffuv::Graph_distance_tag(), diffuv::Repair_options(), &report);
+        backend == 0 ? diffuv::parameterize_disc<diffuv::Default_distance_tag>(mesh, mesh.points(), {}, atlas, {}, &disc_report)
+                     : diffuv::parameterize_disc<diffuv::Graph_distance_tag>(mesh, mesh.points(), {}, atlas, {}, &disc_report);
+    report = disc_report.repair;
     ASSERT_TRUE(status.ok()) << status.what();
-    const auto d = diffuv::measure_distortion(mesh, faces(mesh), mesh.points(), atlas.vertex_uv_map());
+    const auto d = diffuv::measure_distortion(mesh, mesh.points(), faces(mesh), atlas.vertex_uv_map());
     EXPECT_EQ(d.flipped, 0u) << GetParam() << " backend " << backend;
     EXPECT_EQ(d.overlapping_pairs, 0u) << GetParam() << " backend " << backend;
     EXPECT_EQ(d.degenerate, 0u) << GetParam() << " backend " << backend;
-    EXPECT_EQ(report.forced_degenerate, 0u);
+    EXPECT_EQ(report.flat_triangles, 0u);
     EXPECT_EQ(report.remaining_folded_faces, 0u);
   }
 }
@@ -295,12 +302,12 @@ TEST(FlatTriangles, AGivenCornerLeavesTheEarFlatAndItIsCountedAsForced)
   const Mesh m = grid_with_ear(tip);
   diffuv::Uv_atlas<Mesh> atlas(m);
   diffuv::Repair_report report;
-  ASSERT_TRUE(diffuv::parameterize_disc(m, {grid_vertex(4, 0, 0), grid_vertex(4, 4, 0), grid_vertex(4, 4, 4), grid_vertex(4, 0, 4)},
-                                        atlas, nullptr, diffuv::Fibonacci_heap_tag(), diffuv::Default_distance_tag(),
-                                        diffuv::Repair_options(), &report)
+  diffuv::Disc_parameterization_report<Mesh> disc_report;
+  ASSERT_TRUE(diffuv::parameterize_disc<diffuv::Default_distance_tag>(m, m.points(), {grid_vertex(4, 0, 0), grid_vertex(4, 4, 0), grid_vertex(4, 4, 4), grid_vertex(4, 0, 4)}, atlas, {}, &disc_report)
                   .ok());
-  EXPECT_EQ(report.forced_degenerate, 1u);
-  const auto d = diffuv::measure_distortion(m, faces(m), m.points(), atlas.vertex_uv_map());
+  report = disc_report.repair;
+  EXPECT_EQ(report.flat_triangles, 1u);
+  const auto d = diffuv::measure_distortion(m, m.points(), faces(m), atlas.vertex_uv_map());
   EXPECT_EQ(d.degenerate, 1u);
   EXPECT_EQ(d.flipped, 0u);
   EXPECT_EQ(d.overlapping_pairs, 0u);
@@ -344,9 +351,11 @@ TEST(FlatTriangles, AutomaticCornersPutACornerOnTheEarsTip)
 
   diffuv::Uv_atlas<Mesh> atlas(m);
   diffuv::Repair_report report;
-  ASSERT_TRUE(diffuv::parameterize_disc(m, {}, atlas, nullptr, diffuv::Fibonacci_heap_tag(), diffuv::Default_distance_tag(), diffuv::Repair_options(), &report).ok());
-  EXPECT_EQ(report.forced_degenerate, 0u);
-  EXPECT_TRUE(diffuv::measure_distortion(m, faces(m), m.points(), atlas.vertex_uv_map()).injective());
+  diffuv::Disc_parameterization_report<Mesh> disc_report;
+  ASSERT_TRUE(diffuv::parameterize_disc<diffuv::Default_distance_tag>(m, m.points(), {}, atlas, {}, &disc_report).ok());
+  report = disc_report.repair;
+  EXPECT_EQ(report.flat_triangles, 0u);
+  EXPECT_TRUE(diffuv::measure_distortion(m, m.points(), faces(m), atlas.vertex_uv_map()).injective());
 }
 
 } // namespace

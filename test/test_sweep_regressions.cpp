@@ -19,12 +19,12 @@ using Seg = diffuv::Segmentation<Mesh>;
 void expect_all_patches_mapped(const Mesh& m, const Seg& seg, const std::string& name)
 {
   diffuv::Uv_atlas<Mesh> atlas(m);
-  const auto results = diffuv::parameterize_patches(m, seg, m.points(), atlas);
+  const auto results = diffuv::parameterize_patches(m, m.points(), seg, atlas);
   ASSERT_EQ(results.size(), seg.number_of_patches()) << name;
   for(std::size_t p = 0; p < results.size(); ++p) {
     ASSERT_TRUE(results[p].status.ok()) << name << " patch " << p << ": " << results[p].status.what();
     const auto& chart = atlas.chart(results[p].chart);
-    const auto d = diffuv::measure_distortion(m, chart.faces, m.points(), atlas.chart_uv_map(results[p].chart));
+    const auto d = diffuv::measure_distortion(m, m.points(), chart.faces, atlas.chart_uv_map(results[p].chart));
     EXPECT_EQ(d.flipped, 0u) << name << " patch " << p;
     EXPECT_EQ(d.degenerate, 0u) << name << " patch " << p;
     for(auto v : chart.vertices) {
@@ -67,19 +67,19 @@ TEST(SweepRegressions, TinyClosedMeshesAreCutIntoDiscs)
     Seg seg;
     diffuv::Patching_options voronoi;
     voronoi.layout = diffuv::Patch_layout::voronoi;
-    const diffuv::Status status = diffuv::disc_patches(m, std::vector<int>(), m.points(), seg, voronoi);
+    const diffuv::Status status = diffuv::disc_patches(m, m.points(), std::vector<int>(), seg, voronoi);
     ASSERT_TRUE(status.ok()) << name << ": " << status.what();
     ASSERT_EQ(seg.number_of_patches(), 2u) << name;
     for(std::size_t p = 0; p < 2; ++p) EXPECT_EQ(seg.patch_faces[p].size(), 2u) << name;
     expect_all_patches_mapped(m, seg, name);
     // The four-sided layout (default): discs too, each of them mapped.
     Seg quads;
-    ASSERT_TRUE(diffuv::disc_patches(m, std::vector<int>(), m.points(), quads).ok()) << name;
+    ASSERT_TRUE(diffuv::disc_patches(m, m.points(), std::vector<int>(), quads).ok()) << name;
     expect_all_patches_mapped(m, quads, name + ", four-sided layout");
   }
   const Mesh m = bipyramid();
   Seg seg;
-  const diffuv::Status status = diffuv::disc_patches(m, std::vector<int>(), m.points(), seg);
+  const diffuv::Status status = diffuv::disc_patches(m, m.points(), std::vector<int>(), seg);
   ASSERT_TRUE(status.ok()) << status.what();
   expect_all_patches_mapped(m, seg, "bipyramid");
 }
@@ -90,7 +90,7 @@ TEST(SweepRegressions, OneFaceRegionsOfATetrahedronMergeIntoTwoDiscs)
 {
   const Mesh& m = cgal_mesh("tetrahedron.off");
   Seg seg;
-  const diffuv::Status status = diffuv::disc_patches(m, std::vector<int>{0, 1, 2, 3}, m.points(), seg);
+  const diffuv::Status status = diffuv::disc_patches(m, m.points(), std::vector<int>{0, 1, 2, 3}, seg);
   ASSERT_TRUE(status.ok()) << status.what();
   ASSERT_EQ(seg.number_of_patches(), 2u);
   expect_all_patches_mapped(m, seg, "tetrahedron, labels 0 1 2 3");
@@ -109,9 +109,9 @@ TEST(SweepRegressions, MergeStillPrefersTheLongestSharedBorder)
   std::vector<int> labels(num_faces(grid), 9);
   labels[11] = 1;
   labels[10] = 2;
-  Seg seg = diffuv::patches_from_labels(grid, labels, grid.points());
+  Seg seg = diffuv::patches_from_labels(grid, grid.points(), labels);
   ASSERT_EQ(seg.number_of_patches(), 3u);
-  EXPECT_EQ(diffuv::merge_small_patches(grid, labels, seg, grid.points()), 2u);
+  EXPECT_EQ(diffuv::merge_small_patches(grid, grid.points(), labels, seg), 2u);
   EXPECT_EQ(labels[11], 9);
   EXPECT_EQ(labels[10], 9);
   EXPECT_EQ(seg.number_of_patches(), 1u);
@@ -130,17 +130,17 @@ TEST(SweepRegressions, StrictDoesNotRefuseAutomaticPatches)
   options.automatic.patches = 1;
   options.automatic.max_patches = 1;
   Seg loose, strict;
-  ASSERT_TRUE(diffuv::disc_patches(m, std::vector<int>(), m.points(), loose, options).ok());
+  ASSERT_TRUE(diffuv::disc_patches(m, m.points(), std::vector<int>(), loose, options).ok());
   options.strict = true;
   diffuv::Patching_report report;
-  const diffuv::Status status = diffuv::disc_patches(m, std::vector<int>(), m.points(), strict, options, &report);
+  const diffuv::Status status = diffuv::disc_patches(m, m.points(), std::vector<int>(), strict, options, &report);
   ASSERT_TRUE(status.ok()) << status.what();
   EXPECT_GE(report.cut, 1u);
   EXPECT_EQ(strict.face_patch, loose.face_patch);
 
   // Given regions are still refused: the whole sphere labelled as one region.
   Seg refused;
-  EXPECT_FALSE(diffuv::disc_patches(m, std::vector<int>(num_faces(m), 0), m.points(), refused, options).ok());
+  EXPECT_FALSE(diffuv::disc_patches(m, m.points(), std::vector<int>(num_faces(m), 0), refused, options).ok());
 }
 
 } // namespace

@@ -101,7 +101,9 @@ TEST_F(VisualIo, NefertitiSvgParsesWithOnePolygonPerFaceAndExactUv)
   ASSERT_EQ(num_faces(mesh), 562u);
   Atlas atlas(mesh);
   diffuv::Four_sides<vertex_descriptor> sides;
-  ASSERT_TRUE(diffuv::parameterize_disc(mesh, {}, atlas, &sides).ok());
+  diffuv::Disc_parameterization_report<Mesh> disc_report;
+  ASSERT_TRUE(diffuv::parameterize_disc(mesh, mesh.points(), {}, atlas, {}, &disc_report).ok());
+  sides = disc_report.sides;
 
   const std::string svg = path("nefertiti.svg");
   diffuv::write_uv_layout_svg(svg, atlas, 0, &sides);

@@ -128,11 +128,11 @@ std::optional<std::vector<Point_2>> diffuv_patch(const Mesh& mesh, const Patch& 
   options.enabled = repair;
   for(int run = 0; run < runs; ++run) {
     const auto start = std::chrono::steady_clock::now();
-    diffuv::Diffusion_coordinates<Patch, diffuv::Fibonacci_heap_tag, Tag> coordinates(patch);
+    diffuv::Diffusion_coordinates<Patch, Tag> coordinates(patch);
     diffuv::Status status = coordinates.compute(sides, lengths, boost::make_iterator_property_map(uv.begin(), pindex));
     if(status)
-      diffuv::repair_folds(patch, mesh.points(), sides, boost::make_iterator_property_map(uv.begin(), pindex), &report,
-                           options);
+      diffuv::repair_folds(patch, mesh.points(), sides, boost::make_iterator_property_map(uv.begin(), pindex), options,
+                           &report);
     times.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
     if(!status) {
       why = status.what();
@@ -157,7 +157,7 @@ void run_compare(const Compare_options& options)
   diffuv::Segmentation<Mesh> seg;
   std::vector<diffuv::Four_sides<vertex_descriptor>> sides;
   std::vector<diffuv::Status> patch_status;
-  std::size_t flat_faces_handed = 0;  // faces flat on one side of their patch, handed to a neighbour
+  std::size_t flat_triangles_handed = 0;  // faces flat on one side of their patch, handed to a neighbour
   if(!options.corners.empty()) {
     const auto corners =
         diffuv::selection_vertices(mesh, diffuv::read_selection_file(options.corners), options.corners);
@@ -175,11 +175,11 @@ void run_compare(const Compare_options& options)
   } else {
     diffuv::Patching_report report;
     seg = make_patches(in, options.patches, report);
-    flat_faces_handed = report.flat_faces_handed;
+    flat_triangles_handed = report.flat_triangles_handed;
     sides.resize(seg.number_of_patches());
     for(std::size_t p = 0; p < seg.number_of_patches(); ++p) {
       diffuv::Status status = diffuv::check_patch_disc(mesh, seg, p);
-      if(status) status = diffuv::region_sides(mesh, seg, p, mesh.points(), sides[p]);
+      if(status) status = diffuv::region_sides(mesh, mesh.points(), seg, p, sides[p]);
       patch_status.push_back(status);
     }
   }
@@ -239,7 +239,7 @@ void run_compare(const Compare_options& options)
       }
       r.milliseconds += ms;
       for(std::size_t i = 0; i < chart_vertices.size(); ++i) uv_of[chart_vertices[i].idx()] = chart_uv[i];
-      r.total = diffuv::combined(r.total, diffuv::measure_distortion(mesh, seg.patch_faces[p], mesh.points(), uv_map));
+      r.total = diffuv::combined(r.total, diffuv::measure_distortion(mesh, mesh.points(), seg.patch_faces[p], uv_map));
       r.atlas->add_chart(seg.patch_faces[p], std::move(chart_vertices), std::move(chart_uv));
     }
   }
@@ -262,7 +262,7 @@ void run_compare(const Compare_options& options)
             << " faces, " << seg.number_of_patches() << (seg.number_of_patches() == 1 ? " patch" : " patches")
             << (options.corners.empty() ? "" : " (corners from " + options.corners + ")") << "; median of "
             << options.runs << (options.runs == 1 ? " run" : " runs") << ", times summed over patches";
-  if(flat_faces_handed) std::cout << "; " << flat_faces_handed_clause(flat_faces_handed);
+  if(flat_triangles_handed) std::cout << "; " << flat_triangles_handed_clause(flat_triangles_handed);
   std::cout << "\n";
   std::printf("%-18s %10s %7s %7s %5s %8s %9s %9s %9s %9s %8s %9s %7s\n", "method", "time_ms", "failed", "flipped",
               "degen", "overlaps", "angle_avg", "angle_max", "area_avg", "area_max", "L2", "moved", "1-to-1");

@@ -184,7 +184,7 @@ void run_correspond(const Correspond_options& o)
   Atlas atlas_a(a.mesh), atlas_b(b.mesh);
   auto t = Clock::now();
   with_distance(o.distance, [&](auto tag) {
-    return diffuv::build_labelled_atlas(a.mesh, a.mesh.points(), a.face_labels, atlas_a, options, tag);
+    return diffuv::build_labelled_atlas<decltype(tag)>(a.mesh, a.mesh.points(), a.face_labels, atlas_a, options);
   });
   const double param_a_ms = ms_since(t);
   t = Clock::now();
@@ -192,7 +192,7 @@ void run_correspond(const Correspond_options& o)
   // at the same junctions of regions as A (by name).
   const auto follow_a = diffuv::atlas_to_follow(atlas_a);
   with_distance(o.distance, [&](auto tag) {
-    return diffuv::build_labelled_atlas(b.mesh, b.mesh.points(), b.face_labels, atlas_b, options, tag, &follow_a);
+    return diffuv::build_labelled_atlas<decltype(tag)>(b.mesh, b.mesh.points(), b.face_labels, follow_a, atlas_b, options);
   });
   const double param_b_ms = ms_since(t);
 

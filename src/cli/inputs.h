@@ -41,7 +41,7 @@ struct Patch_cli_options {
   std::string layout = "quads";  // quads | voronoi
   std::size_t patches = 0;       // 0: the layout's own density (voronoi: 12 seeds)
   bool no_split_caps = false;
-  bool keep_flat_faces = false;
+  bool keep_flat_triangles = false;
   bool strict = false;
   std::size_t threads = 0;       // threads that map the patches while the layout is refined
 };
@@ -75,7 +75,7 @@ inline void add_patch_options(CLI::App* cmd, Patch_cli_options& o)
   cmd->add_flag("--no-split-caps", o.no_split_caps,
                 "voronoi layout: keep caps (patches with one neighbour all around, like a hand or an ear) whole "
                 "instead of splitting them in two");
-  cmd->add_flag("--keep-flat-faces", o.keep_flat_faces,
+  cmd->add_flag("--keep-flat-triangles", o.keep_flat_triangles,
                 "Keep every face in its region even when its three vertices end up on one side of the patch (flat in "
                 "any map onto the square) instead of handing it to a neighbouring patch");
   cmd->add_flag("--strict", o.strict, "Report a region that is not a disc instead of cutting it into discs");
@@ -141,11 +141,11 @@ inline Input_mesh read_input(const std::string& path, const Patch_cli_options& o
   return in;
 }
 
-/// What the summary lines say of `Patching_report::flat_faces_handed`: nothing for none.
-inline std::string flat_faces_handed_clause(std::size_t handed)
+/// What the summary lines say of `Patching_report::flat_triangles_handed`: nothing for none.
+inline std::string flat_triangles_handed_clause(std::size_t handed)
 {
   if(handed == 0) return std::string();
-  return std::to_string(handed) + (handed == 1 ? " flat face" : " flat faces") + " handed to a neighbour";
+  return std::to_string(handed) + (handed == 1 ? " flat triangle" : " flat triangles") + " handed to a neighbour";
 }
 
 /// Cuts the mesh into disc patches (see `diffuv::disc_patches()`).
@@ -156,7 +156,7 @@ inline diffuv::Segmentation<Mesh> make_patches(const Input_mesh& in, const Patch
   diffuv::Patching_options options;
   options.layout = o.layout == "voronoi" ? diffuv::Patch_layout::voronoi : diffuv::Patch_layout::quads;
   options.split_caps = !o.no_split_caps;
-  options.hand_off_flat_faces = !o.keep_flat_faces;
+  options.hand_off_flat_triangles = !o.keep_flat_triangles;
   options.strict = o.strict;
   options.automatic.patches = o.patches > 0 ? o.patches : 12;
   options.quads.target_patches = o.patches;
@@ -164,7 +164,7 @@ inline diffuv::Segmentation<Mesh> make_patches(const Input_mesh& in, const Patch
   judging.threads = o.threads;
   const diffuv::Raw_map_judge<Mesh, decltype(in.mesh.points())> judge(in.mesh, in.mesh.points(), judging);
   diffuv::Segmentation<Mesh> seg;
-  const diffuv::Status status = diffuv::disc_patches(in.mesh, in.face_labels, in.mesh.points(), seg, options, &report, judge);
+  const diffuv::Status status = diffuv::disc_patches(in.mesh, in.mesh.points(), in.face_labels, seg, options, &report, judge);
   if(!status && o.strict)
     throw diffuv::Input_error(in.labels_path.empty() ? in.path : in.labels_path, 0, status.what());
   return seg;
@@ -181,7 +181,7 @@ inline std::string patching_clause(const diffuv::Patching_report& r, const Patch
     if(r.voronoi_instead) s = "the four-sided layout left a patch that is not a disc: Voronoi patches instead; " + s;
   } else {
     const auto& l = r.layout;
-    if(l.cells == 0 && l.kept_regions == 0) return r.flat_faces_handed ? flat_faces_handed_clause(r.flat_faces_handed) : "each disc component is one patch";
+    if(l.cells == 0 && l.kept_regions == 0) return r.flat_triangles_handed ? flat_triangles_handed_clause(r.flat_triangles_handed) : "each disc component is one patch";
     s = "four-sided layout: " + std::to_string(l.quads) + (l.quads == 1 ? " quad" : " quads");
     if(l.kept_regions > 0) {
       s += " (the regions, kept whole)";
@@ -194,7 +194,7 @@ inline std::string patching_clause(const diffuv::Patching_report& r, const Patch
     if(r.merged > 0) s += ", " + std::to_string(r.merged) + " merged (fewer than four border vertices)";
     if(r.cut > 0) s += ", " + std::to_string(r.cut) + (r.cut == 1 ? " region" : " regions") + " not a disc (cut into cells)";
   }
-  if(r.flat_faces_handed) s += ", " + flat_faces_handed_clause(r.flat_faces_handed);
+  if(r.flat_triangles_handed) s += ", " + flat_triangles_handed_clause(r.flat_triangles_handed);
   return s;
 }
 

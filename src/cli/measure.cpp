@@ -51,7 +51,7 @@ void run_measure(const Measure_options& options)
       }
       faces.push_back(soup.add_face(v[0], v[1], v[2]));
     }
-    const auto d = diffuv::measure_distortion(soup, faces, soup.points(),
+    const auto d = diffuv::measure_distortion(soup, soup.points(), faces,
                                               boost::make_iterator_property_map(uv.begin(), get(boost::vertex_index, soup)));
     if(!d.injective()) ++not_injective;
     if(options.charts)

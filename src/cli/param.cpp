@@ -115,10 +115,13 @@ Parameterization parameterize_with_corners(const Input_mesh& in, const std::vect
   result.atlas = std::make_unique<Atlas>(in.mesh);
   diffuv::Patch_result<Mesh> patch;
   const auto start = std::chrono::steady_clock::now();
+  diffuv::Disc_parameterization_report<Mesh> report;
   patch.status = with_distance(distance, [&](auto tag) {
-    return diffuv::parameterize_disc(in.mesh, corners, *result.atlas, &patch.sides, diffuv::Fibonacci_heap_tag(), tag,
-                                     repair, &patch.repair);
+    return diffuv::parameterize_disc<decltype(tag)>(in.mesh, in.mesh.points(), corners, *result.atlas,
+                                                    diffuv::Disc_parameterization_options{repair}, &report);
   });
+  patch.sides = std::move(report.sides);
+  patch.repair = report.repair;
   result.milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   if(!patch.status) {
     if(is_corner_problem(patch.status.code)) {
@@ -153,8 +156,8 @@ Parameterization parameterize_by_patches(const Input_mesh& in, const Patch_cli_o
   result.seg = make_patches(in, options, result.patching);
   result.patches_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   result.patches = with_distance(distance, [&](auto tag) {
-    return diffuv::parameterize_patches(in.mesh, result.seg, in.mesh.points(), *result.atlas, tag,
-                                        diffuv::Fibonacci_heap_tag(), repair, nullptr, true, threads);
+    return diffuv::parameterize_patches<decltype(tag)>(in.mesh, in.mesh.points(), result.seg, *result.atlas,
+                                                       diffuv::Patch_parameterization_options{repair, nullptr, true, threads});
   });
   result.milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return result;
@@ -185,11 +188,11 @@ std::string corner_rule(const diffuv::Side_report& r, bool given)
 }
 
 void print_row(const std::string& name, const std::string& label, std::size_t vertices, std::size_t faces,
-               const std::string& corners, double ms, std::size_t moved, std::size_t forced,
+               const std::string& corners, double ms, std::size_t moved, std::size_t flat,
                const diffuv::Distortion_summary& d)
 {
   std::printf("%-6s %6s %8zu %8zu %-10s %8.2f %6zu %7zu %5zu %6zu %8zu %9.4f %9.4g %9.4f %9.4g %8.4g %9.4g %9s\n",
-              name.c_str(), label.c_str(), vertices, faces, corners.c_str(), ms, moved, d.flipped, d.degenerate, forced,
+              name.c_str(), label.c_str(), vertices, faces, corners.c_str(), ms, moved, d.flipped, d.degenerate, flat,
               d.overlapping_pairs, d.angle_mean, d.angle_max, d.area_mean, d.area_max, d.stretch_l2, d.stretch_linf,
               d.injective() ? "yes" : "no");
 }
@@ -212,10 +215,10 @@ std::vector<Chart_measure> measure_charts(const Input_mesh& in, const Parameteri
     Chart_measure& m = measures[p];
     // As the OBJ carries it: on the chart's rectangle, or on the unit square.
     if(unit_squares)
-      m.summary = diffuv::measure_distortion(in.mesh, chart.faces, in.mesh.points(),
+      m.summary = diffuv::measure_distortion(in.mesh, in.mesh.points(), chart.faces,
                                              result.atlas->chart_uv_map(r.chart), &m.per_face);
     else
-      m.summary = diffuv::measure_distortion(in.mesh, chart.faces, in.mesh.points(),
+      m.summary = diffuv::measure_distortion(in.mesh, in.mesh.points(), chart.faces,
                                              result.atlas->chart_texture_map(r.chart), &m.per_face);
   }
   return measures;
@@ -414,12 +417,12 @@ void run_param(const Param_options& options)
               << "; " << patching_clause(r, options.patches) << "\n";
   }
   std::printf("%-6s %6s %8s %8s %-10s %8s %6s %7s %5s %6s %8s %9s %9s %9s %9s %8s %9s %9s\n", "patch", "label",
-              "vertices", "faces", "corners", "time_ms", "moved", "flipped", "degen", "forced", "overlaps", "angle_avg", "angle_max", "area_avg",
+              "vertices", "faces", "corners", "time_ms", "moved", "flipped", "degen", "flat", "overlaps", "angle_avg", "angle_max", "area_avg",
               "area_max", "L2", "Linf", "injective");
 
   diffuv::Distortion_summary total;
   double patch_ms = 0;
-  std::size_t vertex_entries = 0, moved = 0, forced = 0;
+  std::size_t vertex_entries = 0, moved = 0, flat = 0;
   for(std::size_t p = 0; p < result.patches.size(); ++p) {
     const auto& r = result.patches[p];
     const std::string label = std::to_string(result.seg.patch_label[p]) +
@@ -434,14 +437,14 @@ void run_param(const Param_options& options)
     const std::size_t patch_moved = r.repair.moved_vertices + r.repair.moved_border_vertices;
     print_row(std::to_string(p), label, chart.vertices.size(), chart.faces.size(),
               corner_rule(r.side_report, !options.corners.empty()), r.milliseconds, patch_moved,
-              r.repair.forced_degenerate, d);
+              r.repair.flat_triangles, d);
     moved += patch_moved;
-    forced += r.repair.forced_degenerate;
+    flat += r.repair.flat_triangles;
     vertex_entries += chart.vertices.size();
     total = diffuv::combined(total, d);
     patch_ms += r.milliseconds;
   }
-  print_row("total", "", vertex_entries, total.faces, "", total_ms, moved, forced, total);
+  print_row("total", "", vertex_entries, total.faces, "", total_ms, moved, flat, total);
   if(in.report.degenerate_faces > 0)
     std::cerr << "diffuv: warning: " << in.path << ": " << in.report.degenerate_faces
               << " faces have zero area; their (u,v) triangles may be flat (column degen)\n";

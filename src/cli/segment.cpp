@@ -37,7 +37,7 @@ void run_segment(const Segment_options& options)
   std::vector<char> has_corners(seg.number_of_patches(), 0);
   for(std::size_t p = 0; p < seg.number_of_patches(); ++p) {
     diffuv::Four_sides<Mesh::Vertex_index> sides;
-    if(!diffuv::check_patch_disc(in.mesh, seg, p) || !diffuv::region_sides(in.mesh, seg, p, in.mesh.points(), sides)) continue;
+    if(!diffuv::check_patch_disc(in.mesh, seg, p) || !diffuv::region_sides(in.mesh, in.mesh.points(), seg, p, sides)) continue;
     for(std::size_t k = 0; k < 4; ++k) corners[p][k] = sides.corners[k].idx();  // vertex i of the mesh is point i of the file
     has_corners[p] = 1;
   }

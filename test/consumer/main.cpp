@@ -106,7 +106,9 @@ int main()
     make_grid(mesh, n);
     diffuv::Uv_atlas<Mesh> atlas(mesh);
     diffuv::Four_sides<vertex_descriptor> sides;
-    const diffuv::Status status = diffuv::parameterize_disc(mesh, {}, atlas, &sides);
+    diffuv::Disc_parameterization_report<Mesh> disc_report;
+    const diffuv::Status status = diffuv::parameterize_disc(mesh, mesh.points(), {}, atlas, {}, &disc_report);
+    sides = disc_report.sides;
     check(bool(status), "automatic corners: parameterize_disc: " + status.what());
     if(status) check_map(mesh, atlas, sides, atlas.vertex_uv_map(), "automatic corners");
   }
@@ -119,7 +121,9 @@ int main()
     diffuv::Uv_atlas<Mesh> atlas(mesh);
     diffuv::Four_sides<vertex_descriptor> sides;
     const std::vector<vertex_descriptor> corners{grid[0][0], grid[n - 1][0], grid[n - 1][n - 1], grid[0][n - 1]};
-    const diffuv::Status status = diffuv::parameterize_disc(mesh, corners, atlas, &sides);
+    diffuv::Disc_parameterization_report<Mesh> disc_report;
+    const diffuv::Status status = diffuv::parameterize_disc(mesh, mesh.points(), corners, atlas, {}, &disc_report);
+    sides = disc_report.sides;
     check(bool(status), "grid corners: parameterize_disc: " + status.what());
     if(status) {
       auto uv = atlas.vertex_uv_map();

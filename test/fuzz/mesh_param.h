@@ -63,12 +63,12 @@ inline void mesh_param(const std::uint8_t* data, std::size_t size)
 
   diffuv::Segmentation<Mesh> seg;
   diffuv::Patching_report patching;
-  diffuv::disc_patches(mesh, face_labels, mesh.points(), seg, diffuv::Patching_options(), &patching);
+  diffuv::disc_patches(mesh, mesh.points(), face_labels, seg, diffuv::Patching_options(), &patching);
   check(seg.face_patch.size() == num_faces(mesh), "the segmentation has not one patch per face");
   for(std::size_t p : seg.face_patch) check(p < seg.number_of_patches(), "a face in no patch");
 
   diffuv::Uv_atlas<Mesh> atlas(mesh);
-  const auto results = diffuv::parameterize_patches(mesh, seg, mesh.points(), atlas);
+  const auto results = diffuv::parameterize_patches(mesh, mesh.points(), seg, atlas);
   check(results.size() == seg.number_of_patches(), "parameterize_patches returned another number of results");
   std::size_t mapped = 0;
   for(const auto& r : results) {

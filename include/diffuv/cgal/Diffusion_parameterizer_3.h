@@ -314,37 +314,22 @@ private:
     return status;
   }
 
-  // parameterize_disc() with its own defaults for what is CGAL::Default here,
-  // so that this class follows the library's default distance (and heap).
+  // parameterize_disc() with the library's defaults for what is CGAL::Default
+  // here, so that this class follows the library's default distance and heap.
   // A map that still folds after the repair (numerically degenerate input
   // only) is `not_injective`, which CGAL callers see as ERROR_NO_1_TO_1_MAPPING.
   static Status run_parameterize_disc(const Work_mesh& work, const std::vector<work_vertex>& corners,
                                       Uv_atlas<Work_mesh>& atlas, Four_sides<work_vertex>& sides)
   {
-    Repair_report repair;
-    Status status = run_parameterize_disc(work, corners, atlas, sides, repair);
-    if(status && repair.remaining_folded_faces > 0)
-      status = Status(Status_code::not_injective, std::to_string(repair.remaining_folded_faces) + " folded faces");
+    typedef typename CGAL::Default::Get<DistanceTag, Default_distance_tag>::type Distance;
+    typedef typename CGAL::Default::Get<HeapTag, Fibonacci_heap_tag>::type Heap;
+    Disc_parameterization_report<Work_mesh> report;
+    Status status = parameterize_disc<Distance, Heap>(work, get(CGAL::vertex_point, work), corners, atlas, {}, &report);
+    if(status && report.repair.remaining_folded_faces > 0)
+      status = Status(Status_code::not_injective,
+                      std::to_string(report.repair.remaining_folded_faces) + " folded faces");
+    sides = std::move(report.sides);
     return status;
-  }
-
-  static Status run_parameterize_disc(const Work_mesh& work, const std::vector<work_vertex>& corners,
-                                      Uv_atlas<Work_mesh>& atlas, Four_sides<work_vertex>& sides,
-                                      Repair_report& repair)
-  {
-    constexpr bool default_distance = std::is_same<DistanceTag, CGAL::Default>::value;
-    constexpr bool default_heap = std::is_same<HeapTag, CGAL::Default>::value;
-    if constexpr(default_distance && default_heap) {
-      return parameterize_disc(work, corners, atlas, &sides, Fibonacci_heap_tag(), Default_distance_tag(),
-                               Repair_options(), &repair);
-    } else if constexpr(default_distance) {
-      return parameterize_disc(work, corners, atlas, &sides, HeapTag(), Default_distance_tag(), Repair_options(),
-                               &repair);
-    } else {
-      // The heap tag comes first: name parameterize_disc()'s default heap.
-      typedef typename CGAL::Default::Get<HeapTag, Fibonacci_heap_tag>::type Heap;
-      return parameterize_disc(work, corners, atlas, &sides, Heap(), DistanceTag(), Repair_options(), &repair);
-    }
   }
 
   std::vector<vertex_descriptor> given_corners_; // empty: automatic

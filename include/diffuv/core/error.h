@@ -2,7 +2,11 @@
 //
 // Algorithms return a Status (an enum plus a detail string naming the patch,
 // vertex or side) and never print. Readers and writers throw Input_error /
-// Output_error, which carry the file, the line and the reason. Only a
+// Output_error (both diffuv::Error), which carry the file, the line and the
+// reason. A call that breaks a documented precondition (arrays of the wrong
+// size, an option out of its range) throws std::invalid_argument, or
+// std::out_of_range for an index past the end (a chart that does not exist),
+// as the standard library does. Nothing else leaves the library. Only a
 // program's main() writes to the terminal.
 #ifndef DIFFUV_CORE_ERROR_H
 #define DIFFUV_CORE_ERROR_H

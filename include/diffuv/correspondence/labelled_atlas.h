@@ -34,13 +34,13 @@ struct Labelled_atlas_options {
   /// Cut of non-disc regions, split of caps. The regions themselves are the
   /// patches (`Patch_layout::voronoi`): the four-sided layout would cut each
   /// region into cells from seeds placed on each mesh's own tessellation, and
-  /// two meshes' cells would not correspond. No flat face is handed to a
-  /// neighbouring patch here (`hand_off_flat_faces`), for the reason below:
+  /// two meshes' cells would not correspond. No flat triangle is handed to a
+  /// neighbouring patch here (`hand_off_flat_triangles`), for the reason below:
   /// the two meshes' patches would differ where their tessellations differ.
   Patching_options patching = [] {
     Patching_options o;
     o.layout = Patch_layout::voronoi;
-    o.hand_off_flat_faces = false;
+    o.hand_off_flat_triangles = false;
     return o;
   }();
   /// Move corners onto ear tips so that no triangle is flat (`region_sides()`):
@@ -131,6 +131,48 @@ Atlas_to_follow atlas_to_follow(const Labelled_atlas<TriangleMesh>& atlas)
   return {corner_names_by_key(atlas), atlas.split_runs};
 }
 
+namespace internal {
+
+template <class DistanceTag, class TriangleMesh, class VertexPointMap>
+Status build_labelled_atlas(const TriangleMesh& tm, VertexPointMap vpm, std::vector<int> face_labels,
+                            const Atlas_to_follow* follow, Labelled_atlas<TriangleMesh>& out,
+                            const Labelled_atlas_options& options)
+{
+  if(face_labels.empty()) return Status(Status_code::no_labels);
+  if(face_labels.size() != num_faces(tm))
+    throw std::invalid_argument("build_labelled_atlas: face_labels must have one entry per face");
+  if(options.clean) out.cleaning = clean_labels(tm, vpm, face_labels, options.cleaning);
+  out.face_labels = face_labels;
+  disc_patches(tm, vpm, std::move(face_labels), out.segmentation, options.patching, &out.patching);
+  if(options.sub_patches) {
+    const std::vector<Patch_key> region_keys = patch_keys(out.segmentation);
+    std::vector<std::vector<Run_key>> followed;
+    if(follow)
+      for(const Patch_key& key : region_keys) {
+        const auto it = follow->split_runs.find(key);
+        followed.push_back(it == follow->split_runs.end() ? std::vector<Run_key>() : it->second);
+      }
+    out.sub_patching = split_regions_into_quads(tm, vpm, out.segmentation, options.sub_patching, follow ? &followed : nullptr);
+    for(std::size_t p = 0; p < region_keys.size(); ++p)
+      if(!out.sub_patching.runs[p].empty()) out.split_runs.emplace(region_keys[p], out.sub_patching.runs[p]);
+  }
+  std::vector<Corner_names> names;
+  if(follow) {
+    for(const Patch_key& key : patch_keys(out.segmentation)) {
+      const auto it = follow->corners.find(key);
+      names.push_back(it == follow->corners.end() ? Corner_names() : it->second);
+    }
+  }
+  Patch_parameterization_options mapping;
+  mapping.repair = options.repair;
+  mapping.corner_names = follow ? &names : nullptr;
+  mapping.move_corners_off_ears = options.move_corners_off_ears;
+  out.patches = parameterize_patches<DistanceTag>(tm, vpm, out.segmentation, out.atlas, mapping);
+  return Status();
+}
+
+} // namespace internal
+
 /// Cleans `face_labels`, cuts the regions into disc patches and maps each
 /// patch onto its square (`parameterize_patches()`).
 ///
@@ -151,41 +193,21 @@ Atlas_to_follow atlas_to_follow(const Labelled_atlas<TriangleMesh>& atlas)
 ///          otherwise `ok` — patches that are not discs or could not be mapped
 ///          are reported in `out.patching.not_discs` and `out.patches[p].status`
 /// \throws std::invalid_argument if `face_labels` has neither 0 nor #F entries
-template <class TriangleMesh, class VertexPointMap, class DistanceTag = Default_distance_tag>
+template <class DistanceTag = Default_distance_tag, class TriangleMesh, class VertexPointMap>
 Status build_labelled_atlas(const TriangleMesh& tm, VertexPointMap vpm, std::vector<int> face_labels,
                             Labelled_atlas<TriangleMesh>& out,
-                            const Labelled_atlas_options& options = Labelled_atlas_options(),
-                            DistanceTag distance = DistanceTag(),
-                            const Atlas_to_follow* follow = nullptr)
+                            const Labelled_atlas_options& options = Labelled_atlas_options())
 {
-  if(face_labels.empty()) return Status(Status_code::no_labels);
-  if(face_labels.size() != num_faces(tm))
-    throw std::invalid_argument("build_labelled_atlas: face_labels must have one entry per face");
-  if(options.clean) out.cleaning = clean_labels(tm, vpm, face_labels, options.cleaning);
-  out.face_labels = face_labels;
-  disc_patches(tm, std::move(face_labels), vpm, out.segmentation, options.patching, &out.patching);
-  if(options.sub_patches) {
-    const std::vector<Patch_key> region_keys = patch_keys(out.segmentation);
-    std::vector<std::vector<Run_key>> followed;
-    if(follow)
-      for(const Patch_key& key : region_keys) {
-        const auto it = follow->split_runs.find(key);
-        followed.push_back(it == follow->split_runs.end() ? std::vector<Run_key>() : it->second);
-      }
-    out.sub_patching = split_regions_into_quads(tm, out.segmentation, vpm, options.sub_patching, follow ? &followed : nullptr);
-    for(std::size_t p = 0; p < region_keys.size(); ++p)
-      if(!out.sub_patching.runs[p].empty()) out.split_runs.emplace(region_keys[p], out.sub_patching.runs[p]);
-  }
-  std::vector<Corner_names> names;
-  if(follow) {
-    for(const Patch_key& key : patch_keys(out.segmentation)) {
-      const auto it = follow->corners.find(key);
-      names.push_back(it == follow->corners.end() ? Corner_names() : it->second);
-    }
-  }
-  out.patches = parameterize_patches(tm, out.segmentation, vpm, out.atlas, distance, Fibonacci_heap_tag(),
-                                     options.repair, follow ? &names : nullptr, options.move_corners_off_ears);
-  return Status();
+  return internal::build_labelled_atlas<DistanceTag>(tm, vpm, std::move(face_labels), nullptr, out, options);
+}
+
+/// Same as above, following another mesh's atlas (`atlas_to_follow()`).
+template <class DistanceTag = Default_distance_tag, class TriangleMesh, class VertexPointMap>
+Status build_labelled_atlas(const TriangleMesh& tm, VertexPointMap vpm, std::vector<int> face_labels,
+                            const Atlas_to_follow& follow, Labelled_atlas<TriangleMesh>& out,
+                            const Labelled_atlas_options& options = Labelled_atlas_options())
+{
+  return internal::build_labelled_atlas<DistanceTag>(tm, vpm, std::move(face_labels), &follow, out, options);
 }
 
 } // namespace diffuv

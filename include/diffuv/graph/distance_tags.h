@@ -37,11 +37,11 @@ using Default_distance_tag = Fmm_distance_tag;
 namespace internal {
 
 // One multi-source distance computation per tag, keeping its buffers.
-template <class Graph, class HeapTag, class DistanceTag>
+template <class Graph, class DistanceTag, class HeapTag>
 class Distance_engine;
 
 template <class Graph, class HeapTag>
-class Distance_engine<Graph, HeapTag, Graph_distance_tag> {
+class Distance_engine<Graph, Graph_distance_tag, HeapTag> {
 public:
   explicit Distance_engine(const Graph& g) : dijkstra_(g) {}
   template <class SourceRange, class WeightMap, class DistanceMap>
@@ -55,7 +55,7 @@ private:
 };
 
 template <class Graph, class HeapTag>
-class Distance_engine<Graph, HeapTag, Fmm_distance_tag> {
+class Distance_engine<Graph, Fmm_distance_tag, HeapTag> {
 public:
   explicit Distance_engine(const Graph& g) : graph_(g) {}
   template <class SourceRange, class WeightMap, class DistanceMap>
@@ -71,7 +71,7 @@ private:
 };
 
 template <class Graph, class HeapTag>
-class Distance_engine<Graph, HeapTag, Exact_distance_tag> {
+class Distance_engine<Graph, Exact_distance_tag, HeapTag> {
 public:
   explicit Distance_engine(const Graph& g) : graph_(g) {}
   template <class SourceRange, class WeightMap, class DistanceMap>

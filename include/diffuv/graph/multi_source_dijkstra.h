@@ -232,9 +232,8 @@ private:
 /// \tparam WeightMap a `ReadablePropertyMap` from edges to non-negative `double`
 /// \tparam DistanceMap a `ReadWritePropertyMap` from vertices to `double`; unreachable vertices get +infinity
 /// \returns `empty_source_range`, `negative_weight` or `ok`
-template <class Graph, class SourceRange, class WeightMap, class DistanceMap, class HeapTag = Fibonacci_heap_tag>
-Status multi_source_dijkstra(const Graph& g, const SourceRange& sources, WeightMap weight,
-                             DistanceMap distance, HeapTag = HeapTag())
+template <class HeapTag = Fibonacci_heap_tag, class Graph, class SourceRange, class WeightMap, class DistanceMap>
+Status multi_source_dijkstra(const Graph& g, const SourceRange& sources, WeightMap weight, DistanceMap distance)
 {
   Multi_source_dijkstra<Graph, HeapTag> dijkstra(g);
   return dijkstra.run(sources, weight, distance);

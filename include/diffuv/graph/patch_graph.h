@@ -104,7 +104,7 @@ public:
   }
 
   /// The four sides of the patch in local ids (corners included).
-  /// \throws std::logic_error if a side vertex is not in the patch
+  /// \throws std::invalid_argument if a side vertex is not in the patch
   Four_sides<vertex_descriptor> local_sides(const TriangleMesh& tm, const Four_sides<Mesh_vertex>& sides) const
   {
     Four_sides<vertex_descriptor> out;
@@ -112,7 +112,7 @@ public:
       ids.reserve(side.size());
       for(Mesh_vertex v : side) {
         ids.push_back(local(tm, v));
-        if(ids.back() == none) throw std::logic_error("Patch_graph: a side vertex is not a vertex of its patch");
+        if(ids.back() == none) throw std::invalid_argument("Patch_graph::local_sides: a side vertex is not a vertex of the patch");
       }
     };
     to_local(sides.u1, out.u1);

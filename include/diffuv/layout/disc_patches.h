@@ -4,7 +4,7 @@
 
 #include <diffuv/core/error.h>
 #include <diffuv/patches/disc_topology.h>
-#include <diffuv/patches/flat_faces.h>
+#include <diffuv/patches/flat_triangles.h>
 #include <diffuv/layout/quad_layout.h>
 #include <diffuv/patches/segmentation.h>
 #include <diffuv/patches/split_patches.h>
@@ -31,8 +31,8 @@ struct Patching_options {
   bool split_caps = true;        ///< (voronoi layout) split caps (one neighbour all around) in two, as the paper recommends
   bool strict = false;           ///< report a labelled region that is not a disc instead of cutting it
   /// hand a face left flat by its patch's four sides to a neighbouring patch
-  /// (`hand_flat_faces_to_neighbours()`)
-  bool hand_off_flat_faces = true;
+  /// (`hand_flat_triangles_to_neighbours()`)
+  bool hand_off_flat_triangles = true;
   Voronoi_options automatic;     ///< (voronoi layout) automatic patches: how many seeds to start from
   Quad_layout_options quads;     ///< (quads layout) cells, collapses, refinement
 };
@@ -46,7 +46,7 @@ struct Patching_report {
   std::size_t merged = 0;          ///< patches with fewer than four boundary vertices merged into a neighbour
   std::size_t cut = 0;             ///< non-disc patches cut into discs
   std::size_t caps_split = 0;      ///< caps split in two
-  std::size_t flat_faces_handed = 0;  ///< faces flat on one side of their patch, handed to a neighbouring patch
+  std::size_t flat_triangles_handed = 0;  ///< faces flat on one side of their patch, handed to a neighbouring patch
   /// patches without corners of the layout given corners by their maps (a
   /// judge with `choose_corners()`, e.g. `Raw_map_judge`)
   std::size_t corners_chosen = 0;
@@ -64,12 +64,12 @@ namespace internal {
 // (`merge_small_patches()`). The patches left whole keep their label, part
 // and corners; one that grew keeps its label and part, and loses its corners.
 template <class TriangleMesh, class VertexPointMap>
-std::size_t merge_unmappable_patches(const TriangleMesh& tm, Segmentation<TriangleMesh>& seg, VertexPointMap vpm)
+std::size_t merge_unmappable_patches(const TriangleMesh& tm, VertexPointMap vpm, Segmentation<TriangleMesh>& seg)
 {
   bool any = false;
   for(std::size_t p = 0; p < seg.number_of_patches() && !any; ++p) {
     std::size_t boundary_vertices = 0;
-    for(const auto& loop : patch_loops(tm, seg, p, vpm)) boundary_vertices += loop.vertices.size();
+    for(const auto& loop : patch_loops(tm, vpm, seg, p)) boundary_vertices += loop.vertices.size();
     any = boundary_vertices < 4;
   }
   if(!any) return 0;
@@ -77,8 +77,8 @@ std::size_t merge_unmappable_patches(const TriangleMesh& tm, Segmentation<Triang
   std::vector<int> labels(num_faces(tm), std::numeric_limits<int>::min());
   for(std::size_t p = 0; p < seg.number_of_patches(); ++p)
     for(auto f : seg.patch_faces[p]) labels[get(findex, f)] = static_cast<int>(p);
-  Segmentation<TriangleMesh> merged = patches_from_labels(tm, labels, vpm);
-  const std::size_t count = merge_small_patches(tm, labels, merged, vpm);
+  Segmentation<TriangleMesh> merged = patches_from_labels(tm, vpm, labels);
+  const std::size_t count = merge_small_patches(tm, vpm, labels, merged);
   merged.patch_corners.assign(merged.number_of_patches(), Segmentation<TriangleMesh>::no_corners());
   for(std::size_t q = 0; q < merged.number_of_patches(); ++q) {
     const std::size_t old = static_cast<std::size_t>(merged.patch_label[q]);
@@ -110,8 +110,8 @@ Status four_sided_patches(const TriangleMesh& tm, std::vector<int> face_labels, 
   if(labelled) {
     // Regions with fewer than four boundary vertices join a neighbour, as with
     // the Voronoi layout; with `strict`, a region that is not a disc is reported.
-    seg = patches_from_labels(tm, face_labels, vpm);
-    r.merged = merge_small_patches(tm, face_labels, seg, vpm);
+    seg = patches_from_labels(tm, vpm, face_labels);
+    r.merged = merge_small_patches(tm, vpm, face_labels, seg);
     for(std::size_t p = 0; p < seg.number_of_patches(); ++p)
       if(!check_patch_disc(tm, seg, p)) {
         if(options.strict) r.not_discs.push_back(p);
@@ -122,7 +122,7 @@ Status four_sided_patches(const TriangleMesh& tm, std::vector<int> face_labels, 
     // A component that is a disc stays one patch (its corners by equal arcs);
     // any other one is laid out.
     const std::vector<int> component_labels(component.begin(), component.end());
-    const Segmentation<TriangleMesh> by_component = patches_from_labels(tm, component_labels, vpm);
+    const Segmentation<TriangleMesh> by_component = patches_from_labels(tm, vpm, component_labels);
     face_labels.assign(num_faces(tm), std::numeric_limits<int>::min());
     bool any = false;
     for(std::size_t c = 0; c < by_component.number_of_patches(); ++c) {
@@ -134,7 +134,7 @@ Status four_sided_patches(const TriangleMesh& tm, std::vector<int> face_labels, 
     Segmentation<TriangleMesh> laid;
     if(any) {
       // quad_layout() of the non-disc components only; the discs come after, whole.
-      quad_layout(tm, face_labels, vpm, laid, options.quads, &r.layout, judge, Region_labels::areas);
+      quad_layout(tm, vpm, face_labels, laid, options.quads, &r.layout, judge, Region_labels::areas);
     }
     seg = Segmentation<TriangleMesh>();
     seg.face_patch.assign(num_faces(tm), Segmentation<TriangleMesh>::no_patch);
@@ -153,12 +153,12 @@ Status four_sided_patches(const TriangleMesh& tm, std::vector<int> face_labels, 
   }
   if(labelled) {
     Segmentation<TriangleMesh> laid;
-    quad_layout(tm, face_labels, vpm, laid, options.quads, &r.layout, judge);
+    quad_layout(tm, vpm, face_labels, laid, options.quads, &r.layout, judge);
     seg = std::move(laid);
   }
   // Labelled regions keep their borders: faces move only between their sub-patches.
-  if(options.hand_off_flat_faces) r.flat_faces_handed = hand_flat_faces_to_neighbours(tm, seg, vpm, labelled);
-  const std::size_t unmappable = merge_unmappable_patches(tm, seg, vpm);
+  if(options.hand_off_flat_triangles) r.flat_triangles_handed = hand_flat_triangles_to_neighbours(tm, vpm, seg, labelled);
+  const std::size_t unmappable = merge_unmappable_patches(tm, vpm, seg);
   r.merged += unmappable;
   if(unmappable > 0 && r.layout.kept_regions == 0) {
     // The layout's counts, of the patches left.
@@ -187,12 +187,12 @@ Status four_sided_patches(const TriangleMesh& tm, std::vector<int> face_labels, 
 /// connected component that is a disc is one patch and any other component is
 /// cut automatically (`voronoi_discs()`). Last, a face that the patch's four
 /// sides would leave flat is handed to a neighbouring patch
-/// (`hand_flat_faces_to_neighbours()`, `hand_off_flat_faces`).
+/// (`hand_flat_triangles_to_neighbours()`, `hand_off_flat_triangles`).
 ///
 /// \returns `not_a_disc` (detail: the first bad patch) if a patch that is not a
 ///          disc is left, `ok` otherwise; `seg` is filled in both cases
 template <class TriangleMesh, class VertexPointMap, class Judge = No_refinement>
-Status disc_patches(const TriangleMesh& tm, std::vector<int> face_labels, VertexPointMap vpm,
+Status disc_patches(const TriangleMesh& tm, VertexPointMap vpm, std::vector<int> face_labels,
                     Segmentation<TriangleMesh>& seg, const Patching_options& options = Patching_options(),
                     Patching_report* report = nullptr, Judge judge = Judge())
 {
@@ -208,7 +208,7 @@ Status disc_patches(const TriangleMesh& tm, std::vector<int> face_labels, Vertex
     if(status || (options.strict && labelled)) return status;
     Patching_options voronoi = options;
     voronoi.layout = Patch_layout::voronoi;
-    const Status again = disc_patches(tm, std::move(face_labels), vpm, seg, voronoi, &r);
+    const Status again = disc_patches(tm, vpm, std::move(face_labels), seg, voronoi, &r);
     r.voronoi_instead = true;
     return again;
   }
@@ -222,7 +222,7 @@ Status disc_patches(const TriangleMesh& tm, std::vector<int> face_labels, Vertex
       r.components = CGAL::Polygon_mesh_processing::connected_components(
           tm, boost::make_iterator_property_map(component.begin(), findex));
       std::vector<int> component_labels(component.begin(), component.end());
-      const Segmentation<TriangleMesh> by_component = patches_from_labels(tm, component_labels, vpm);
+      const Segmentation<TriangleMesh> by_component = patches_from_labels(tm, vpm, component_labels);
       int next_label = 0;
       for(std::size_t c = 0; c < by_component.number_of_patches(); ++c) {
         const auto& part = by_component.patch_faces[c];
@@ -233,7 +233,7 @@ Status disc_patches(const TriangleMesh& tm, std::vector<int> face_labels, Vertex
           continue;
         }
         r.automatic = true;
-        voronoi_discs(tm, part, vpm, face_labels, next_label, options.automatic);
+        voronoi_discs(tm, vpm, part, face_labels, next_label, options.automatic);
         for(auto f : part) next_label = (std::max)(next_label, face_labels[get(findex, f)] + 1);
       }
     } else {
@@ -241,13 +241,13 @@ Status disc_patches(const TriangleMesh& tm, std::vector<int> face_labels, Vertex
     }
   }
 
-  seg = patches_from_labels(tm, face_labels, vpm);
-  r.merged = merge_small_patches(tm, face_labels, seg, vpm);
+  seg = patches_from_labels(tm, vpm, face_labels);
+  r.merged = merge_small_patches(tm, vpm, face_labels, seg);
 
   for(std::size_t p = 0; p < seg.number_of_patches(); ++p) {
     if(check_patch_disc(tm, seg, p)) continue;
     if(options.strict && labelled) { r.not_discs.push_back(p); continue; }
-    const std::size_t pieces = cut_into_discs(tm, seg, p, vpm, options.automatic);
+    const std::size_t pieces = cut_into_discs(tm, vpm, seg, p, options.automatic);
     if(pieces > 1) {
       ++r.cut;
       p += pieces - 1;
@@ -260,11 +260,11 @@ Status disc_patches(const TriangleMesh& tm, std::vector<int> face_labels, Vertex
     // whether its neighbour counts as one (two caps side by side both split).
     std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> caps;
     for(std::size_t p = 0; p < seg.number_of_patches(); ++p)
-      if(is_cap(tm, seg, p, vpm)) caps.push_back(seg.patch_faces[p].front());
+      if(is_cap(tm, vpm, seg, p)) caps.push_back(seg.patch_faces[p].front());
     for(auto f : caps)
-      if(split_cap(tm, seg, seg.face_patch[get(findex, f)], vpm)) ++r.caps_split;
+      if(split_cap(tm, vpm, seg, seg.face_patch[get(findex, f)])) ++r.caps_split;
   }
-  if(options.hand_off_flat_faces) r.flat_faces_handed = hand_flat_faces_to_neighbours(tm, seg, vpm);
+  if(options.hand_off_flat_triangles) r.flat_triangles_handed = hand_flat_triangles_to_neighbours(tm, vpm, seg);
   // Indices of the bad patches may have moved with the splits: recompute them.
   r.not_discs.clear();
   for(std::size_t p = 0; p < seg.number_of_patches(); ++p)

@@ -117,8 +117,8 @@ using Centre_distance_memo = std::unordered_map<std::vector<std::size_t>, std::v
 /// their cell, so a cell's distances depend on its faces alone; with a memo,
 /// the cells seen before are looked up.
 template <class TriangleMesh, class VertexPointMap>
-std::vector<double> distance_to_cell_centres(const TriangleMesh& tm, const Segmentation<TriangleMesh>& cells,
-                                             VertexPointMap vpm, Centre_distance_memo* memo = nullptr)
+std::vector<double> distance_to_cell_centres(const TriangleMesh& tm, VertexPointMap vpm,
+                                             const Segmentation<TriangleMesh>& cells, Centre_distance_memo* memo = nullptr)
 {
   using Dual = boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS, boost::no_property,
                                      boost::property<boost::edge_weight_t, double>>;
@@ -212,7 +212,7 @@ void merge_small_cells(const TriangleMesh& tm, VertexPointMap vpm, std::vector<i
     for(std::size_t c : small) {
       const std::size_t region = regions.face_patch[get(findex, cells.patch_faces[c].front())];
       std::map<std::size_t, double> shared;
-      for(const auto& loop : patch_loops(tm, cells, c, vpm))
+      for(const auto& loop : patch_loops(tm, vpm, cells, c))
         for(std::size_t i = 0; i < loop.vertices.size(); ++i) {
           const std::size_t q = loop.neighbour[i];
           if(q != Patch_loop<TriangleMesh>::mesh_border && regions.face_patch[get(findex, cells.patch_faces[q].front())] == region)
@@ -223,7 +223,7 @@ void merge_small_cells(const TriangleMesh& tm, VertexPointMap vpm, std::vector<i
       for(const auto& candidate : by_length) {
         std::vector<int> trial = labels;
         for(auto f : cells.patch_faces[c]) trial[get(findex, f)] = cells.patch_label[candidate.first];
-        Segmentation<TriangleMesh> joined = patches_from_labels(tm, trial, vpm, std::numeric_limits<int>::min());
+        Segmentation<TriangleMesh> joined = patches_from_labels(tm, vpm, trial, std::numeric_limits<int>::min());
         const std::size_t p = joined.face_patch[get(findex, cells.patch_faces[c].front())];
         if(joined.number_of_patches() + 1 != cells.number_of_patches() || !check_patch_disc(tm, joined, p)) continue;
         labels = std::move(trial);
@@ -416,7 +416,7 @@ bool frame_cell(const TriangleMesh& tm, VertexPointMap vpm,
 ///        patches (null corners); labels are patch numbers
 /// \returns `ok`; the report says how many patches are fallbacks
 template <class TriangleMesh, class VertexPointMap>
-Status quads_from_cells(const TriangleMesh& tm, const Segmentation<TriangleMesh>& cells, VertexPointMap vpm,
+Status quads_from_cells(const TriangleMesh& tm, VertexPointMap vpm, const Segmentation<TriangleMesh>& cells,
                         Segmentation<TriangleMesh>& quads, const Quad_layout_options& options = Quad_layout_options(),
                         Quad_layout_report* report = nullptr, const std::vector<std::size_t>* region_of_cell = nullptr,
                         internal::Quads_memo<TriangleMesh>* memo = nullptr)
@@ -455,9 +455,9 @@ Status quads_from_cells(const TriangleMesh& tm, const Segmentation<TriangleMesh>
   std::vector<Arc> arcs;
   std::unordered_map<std::size_t, std::size_t> arc_of_edge;  // smallest edge index -> arc
   std::vector<Cell> cell(nc);
-  const std::vector<double> centre_distance = internal::distance_to_cell_centres(tm, cells, vpm, memo ? &memo->centre_distances : nullptr);
+  const std::vector<double> centre_distance = internal::distance_to_cell_centres(tm, vpm, cells, memo ? &memo->centre_distances : nullptr);
   for(std::size_t c = 0; c < nc; ++c) {
-    auto loops = patch_loops(tm, cells, c, vpm);
+    auto loops = patch_loops(tm, vpm, cells, c);
     if(loops.size() != 1) { fallback_cell[c] = 1; continue; }
     Cell& cc = cell[c];
     cc.loop = std::move(loops.front());
@@ -722,7 +722,7 @@ Status quads_from_cells(const TriangleMesh& tm, const Segmentation<TriangleMesh>
           static_cast<int>(regions.find(number_of(get(vindex, cc.loop.vertices[junction]))));
     }
   }
-  const Segmentation<TriangleMesh> duals = patches_from_labels(tm, dual_label, vpm, Voronoi_cells<TriangleMesh, VertexPointMap>::outside);
+  const Segmentation<TriangleMesh> duals = patches_from_labels(tm, vpm, dual_label, Voronoi_cells<TriangleMesh, VertexPointMap>::outside);
   std::vector<std::size_t> position_in_cell(num_faces(tm), 0);
   for(std::size_t c = 0; c < nc; ++c)
     for(std::size_t f = 0; f < cells.patch_faces[c].size(); ++f) position_in_cell[get(findex, cells.patch_faces[c][f])] = f;
@@ -762,14 +762,14 @@ Status quads_from_cells(const TriangleMesh& tm, const Segmentation<TriangleMesh>
     bool ok = static_cast<bool>(check_patch_disc(tm, duals, t));
     if(ok) {
       // Next to a framed cell, the walls end at the junction: keep the plain sectors.
-      const auto loops = patch_loops(tm, duals, t, vpm);
+      const auto loops = patch_loops(tm, vpm, duals, t);
       for(vertex_descriptor v : loops.front().vertices)
         if(framed_junction[get(vindex, v)]) ok = false;
     }
     std::vector<std::array<vertex_descriptor, 4>> corners;
     const internal::Fan* fan_of_region = nullptr;
     if(ok) {
-      const auto loop = patch_loops(tm, duals, t, vpm).front();
+      const auto loop = patch_loops(tm, vpm, duals, t).front();
       const std::size_t n = loop.vertices.size();
       std::vector<std::size_t> mids;
       for(std::size_t i = 0; i < n; ++i)
@@ -862,7 +862,7 @@ Status quads_from_cells(const TriangleMesh& tm, const Segmentation<TriangleMesh>
     // A piece may be in several components: each is a patch.
     std::vector<int> labels(num_faces(tm), std::numeric_limits<int>::min());
     for(face_descriptor f : piece) labels[get(findex, f)] = 0;
-    Segmentation<TriangleMesh> parts = patches_from_labels(tm, labels, vpm);
+    Segmentation<TriangleMesh> parts = patches_from_labels(tm, vpm, labels);
     for(auto& part : parts.patch_faces) {
       sorted.patch_faces.push_back(std::move(part));
       sorted.patch_corners.push_back(Segmentation<TriangleMesh>::no_corners());
@@ -881,7 +881,7 @@ Status quads_from_cells(const TriangleMesh& tm, const Segmentation<TriangleMesh>
     const auto& corner = sorted.patch_corners[p];
     bool valid = static_cast<bool>(check_patch_disc(tm, sorted, p));
     if(valid) {
-      const auto loop = patch_loops(tm, sorted, p, vpm).front().vertices;
+      const auto loop = patch_loops(tm, vpm, sorted, p).front().vertices;
       std::array<std::size_t, 4> at{};
       for(std::size_t k = 0; k < 4 && valid; ++k) {
         at[k] = static_cast<std::size_t>(std::find(loop.begin(), loop.end(), corner[k]) - loop.begin());
@@ -902,7 +902,7 @@ Status quads_from_cells(const TriangleMesh& tm, const Segmentation<TriangleMesh>
   if(options.split_at_junctions)
     for(std::size_t p = 0; p < sorted.number_of_patches(); ++p) {
       if(sorted.corners(p)) continue;
-      const std::size_t pieces = split_at_junctions(tm, sorted, p, vpm, options.max_cut_ratio);
+      const std::size_t pieces = split_at_junctions(tm, vpm, sorted, p, options.max_cut_ratio);
       if(pieces > 1) {
         ++r.split_fallbacks;
         r.fallback_patches += pieces - 1;
@@ -969,7 +969,7 @@ struct Region_cells {
 ///        null corners; a patch's label is its region's label (its number
 ///        without labels), its part its rank in the region (0 without labels)
 template <class TriangleMesh, class VertexPointMap, class Judge = No_refinement>
-Status quad_layout(const TriangleMesh& tm, const std::vector<int>& face_labels, VertexPointMap vpm,
+Status quad_layout(const TriangleMesh& tm, VertexPointMap vpm, const std::vector<int>& face_labels,
                    Segmentation<TriangleMesh>& layout, const Quad_layout_options& options = Quad_layout_options(),
                    Quad_layout_report* report = nullptr, Judge judge = Judge(),
                    Region_labels kind = Region_labels::regions)
@@ -989,7 +989,7 @@ Status quad_layout(const TriangleMesh& tm, const std::vector<int>& face_labels, 
     CGAL::Polygon_mesh_processing::connected_components(tm, boost::make_iterator_property_map(component.begin(), findex));
     region_labels.assign(component.begin(), component.end());
   }
-  const Segmentation<TriangleMesh> regions = patches_from_labels(tm, region_labels, vpm);
+  const Segmentation<TriangleMesh> regions = patches_from_labels(tm, vpm, region_labels);
   if(labelled) {
     // A layout read back (what `diffuv segment` writes): every region a disc,
     // nearly all of the surface in regions with four runs of neighbours. Its
@@ -999,7 +999,7 @@ Status quad_layout(const TriangleMesh& tm, const std::vector<int>& face_labels, 
     bool all_discs = true;
     for(std::size_t p = 0; p < regions.number_of_patches() && all_discs; ++p) {
       if(!check_patch_disc(tm, regions, p)) { all_discs = false; break; }
-      const auto loop = patch_loops(tm, regions, p, vpm).front();
+      const auto loop = patch_loops(tm, vpm, regions, p).front();
       std::size_t runs = 0;
       for(std::size_t i = 0; i < loop.neighbour.size(); ++i)
         if(loop.neighbour[(i + loop.neighbour.size() - 1) % loop.neighbour.size()] != loop.neighbour[i]) ++runs;
@@ -1070,7 +1070,7 @@ Status quad_layout(const TriangleMesh& tm, const std::vector<int>& face_labels, 
         }
         next += largest + 1;
       }
-      cells = patches_from_labels(tm, labels, vpm, Cells::outside);
+      cells = patches_from_labels(tm, vpm, labels, Cells::outside);
       region_of_cell.assign(cells.number_of_patches(), 0);
       for(std::size_t c = 0; c < cells.number_of_patches(); ++c)
         region_of_cell[c] = regions.face_patch[get(findex, cells.patch_faces[c].front())];
@@ -1093,7 +1093,7 @@ Status quad_layout(const TriangleMesh& tm, const std::vector<int>& face_labels, 
         for(std::size_t c = 0; c < cells.number_of_patches(); ++c) {
           if(!check_patch_disc(tm, cells, c)) { refine(c, cells.patch_faces[c]); continue; }
           if(cells.patch_faces[c].size() < options.min_fix_faces) continue;
-          const auto loop = patch_loops(tm, cells, c, vpm).front();
+          const auto loop = patch_loops(tm, vpm, cells, c).front();
           const std::size_t n = loop.neighbour.size();
           std::map<std::size_t, std::size_t> arcs_with;
           for(std::size_t i = 0; i < n; ++i)
@@ -1146,7 +1146,7 @@ Status quad_layout(const TriangleMesh& tm, const std::vector<int>& face_labels, 
       for(std::size_t i = 0; i < keyed.size(); ++i) faces_of_cell[i] = keyed[i].second;
     }
     Quad_layout_report round_report;
-    quads_from_cells(tm, cells, vpm, layout, options, &round_report, labelled ? &region_of_cell : nullptr, &memo);
+    quads_from_cells(tm, vpm, cells, layout, options, &round_report, labelled ? &region_of_cell : nullptr, &memo);
     const std::size_t refined_so_far = r.refined_cells;
     r = round_report;
     r.rounds = round;

@@ -122,7 +122,7 @@ std::size_t run_midpoint(const Patch_loop<TriangleMesh>& loop, std::size_t a, st
 /// so two meshes whose regions have different run counts pair no sector
 /// wrongly (their keys differ).
 template <class TriangleMesh, class VertexPointMap>
-Sub_patch_report split_regions_into_quads(const TriangleMesh& tm, Segmentation<TriangleMesh>& seg, VertexPointMap vpm,
+Sub_patch_report split_regions_into_quads(const TriangleMesh& tm, VertexPointMap vpm, Segmentation<TriangleMesh>& seg,
                                           const Sub_patch_options& options = Sub_patch_options(),
                                           const std::vector<std::vector<Run_key>>* follow = nullptr)
 {
@@ -146,7 +146,7 @@ Sub_patch_report split_regions_into_quads(const TriangleMesh& tm, Segmentation<T
   std::vector<int> scratch(num_vertices(tm), -1);
   for(std::size_t p = 0; p < P; ++p) {
     if(seg.corners(p) || !check_patch_disc(tm, seg, p)) continue;
-    const auto loops = patch_loops(tm, seg, p, vpm);
+    const auto loops = patch_loops(tm, vpm, seg, p);
     if(loops.size() != 1) continue;
     const auto& loop = loops.front();
     const std::size_t n = loop.vertices.size();
@@ -308,7 +308,7 @@ Sub_patch_report split_regions_into_quads(const TriangleMesh& tm, Segmentation<T
     for(std::size_t s = 0; s < splits[p].sectors.size() && ok; ++s) {
       ok = static_cast<bool>(check_patch_disc(tm, trial, s));
       if(!ok) break;
-      const auto loops = patch_loops(tm, trial, s, vpm);
+      const auto loops = patch_loops(tm, vpm, trial, s);
       Four_sides<vertex_descriptor> sides;
       const auto& c = splits[p].corners[s];
       ok = loops.size() == 1 &&
@@ -324,13 +324,13 @@ Sub_patch_report split_regions_into_quads(const TriangleMesh& tm, Segmentation<T
   std::vector<std::array<vertex_descriptor, 4>> kept(P, Segmentation<TriangleMesh>::no_corners());
   for(std::size_t p = 0; p < P; ++p) {
     if(!splits[p].sectors.empty() || seg.corners(p) || !check_patch_disc(tm, seg, p)) continue;
-    const auto loops = patch_loops(tm, seg, p, vpm);
+    const auto loops = patch_loops(tm, vpm, seg, p);
     bool next_to_split = false;
     for(const auto& loop : loops)
       for(std::size_t q : loop.neighbour) next_to_split = next_to_split || (q != border && !splits[q].sectors.empty());
     if(!next_to_split) continue;
     Four_sides<vertex_descriptor> sides;
-    if(region_sides(tm, seg, p, vpm, sides, nullptr, nullptr, false)) {
+    if(region_sides(tm, vpm, seg, p, sides, Region_sides_options{nullptr, false})) {
       kept[p] = sides.corners;
       ++report.corners_kept;
     }

@@ -162,7 +162,7 @@ public:
   {
     if(faces_.empty()) return;
     set_seeds({internal::farthest_from_area_centroid(
-        tm_, faces_, vpm_, centroids_, [&](std::size_t i, std::size_t j) { return centroids_[i] < centroids_[j]; })});
+        tm_, vpm_, faces_, centroids_, [&](std::size_t i, std::size_t j) { return centroids_[i] < centroids_[j]; })});
     auto all = [](std::size_t) { return true; };
     while(seeds_.size() < std::min(count, faces_.size())) {
       const std::size_t s = farthest(all);

@@ -222,7 +222,7 @@ std::size_t count_overlapping_pairs(const TriangleMesh& tm, const FaceRange& fac
 /// \param per_face if not null, receives one entry per face of `faces`, in range order
 /// \returns the chart's summary
 template <class TriangleMesh, class FaceRange, class VertexPointMap, class UvMap>
-Distortion_summary measure_distortion(const TriangleMesh& tm, const FaceRange& faces, VertexPointMap vpm, UvMap uv,
+Distortion_summary measure_distortion(const TriangleMesh& tm, VertexPointMap vpm, const FaceRange& faces, UvMap uv,
                                       std::vector<Triangle_distortion>* per_face = nullptr)
 {
   internal::check_map_types<TriangleMesh, FaceRange, UvMap>();

@@ -39,7 +39,7 @@ namespace diffuv {
 /// \tparam UvMap a readable property map from vertex descriptor to a 2D point with `x()` and `y()`
 /// \returns {width, height}, or `fallback` if the chart has no measurable triangle
 template <class TriangleMesh, class FaceRange, class VertexPointMap, class UvMap>
-std::array<double, 2> stretch_optimal_rectangle(const TriangleMesh& tm, const FaceRange& faces, VertexPointMap vpm, UvMap uv,
+std::array<double, 2> stretch_optimal_rectangle(const TriangleMesh& tm, VertexPointMap vpm, const FaceRange& faces, UvMap uv,
                                                 std::array<double, 2> fallback = {1., 1.})
 {
   struct Triangle {

@@ -57,7 +57,7 @@ inline double diffusion_ratio(double d1, double d2)
 /// \tparam HeapTag the heap of the distance runs, `Fibonacci_heap_tag` by default
 /// \tparam DistanceTag `Graph_distance_tag` (default, the paper's), `Fmm_distance_tag` or
 ///         `Exact_distance_tag` (distance_tags.h); the last two need a triangle mesh with vertex points
-template <class Graph, class HeapTag = Fibonacci_heap_tag, class DistanceTag = Graph_distance_tag>
+template <class Graph, class DistanceTag = Default_distance_tag, class HeapTag = Fibonacci_heap_tag>
 class Diffusion_coordinates {
 public:
   using vertex_descriptor = typename boost::graph_traits<Graph>::vertex_descriptor;
@@ -100,7 +100,7 @@ public:
           pass(Side::u1, engine_);
           pass(Side::u2, engine_);
         } else {
-          internal::Distance_engine<Graph, HeapTag, DistanceTag> other(graph_);
+          internal::Distance_engine<Graph, DistanceTag, HeapTag> other(graph_);
           pass(Side::v1, other);
           pass(Side::v2, other);
         }
@@ -141,19 +141,19 @@ public:
 
 private:
   const Graph& graph_;
-  internal::Distance_engine<Graph, HeapTag, DistanceTag> engine_;
+  internal::Distance_engine<Graph, DistanceTag, HeapTag> engine_;
   std::array<std::vector<double>, 4> distance_;
   std::size_t both_sides_ = 0;
 };
 
 /// Computes diffusion coordinates on a disc patch (one-shot form of `Diffusion_coordinates`).
-template <class Graph, class WeightMap, class UvMap, class HeapTag = Fibonacci_heap_tag,
-          class DistanceTag = Graph_distance_tag>
+template <class DistanceTag = Default_distance_tag, class HeapTag = Fibonacci_heap_tag, class Graph, class WeightMap,
+          class UvMap>
 Status diffusion_coordinates(const Graph& g,
                              const Four_sides<typename boost::graph_traits<Graph>::vertex_descriptor>& sides,
-                             WeightMap weight, UvMap uv, HeapTag = HeapTag(), DistanceTag = DistanceTag())
+                             WeightMap weight, UvMap uv)
 {
-  Diffusion_coordinates<Graph, HeapTag, DistanceTag> coordinates(g);
+  Diffusion_coordinates<Graph, DistanceTag, HeapTag> coordinates(g);
   return coordinates.compute(sides, weight, uv);
 }
 

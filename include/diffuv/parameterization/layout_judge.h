@@ -73,13 +73,12 @@ std::size_t choose_fallback_corners(const TriangleMesh& tm, VertexPointMap vpm, 
     for(std::size_t p = 0; p < n; ++p)
       if(!wanted[p]) trial.patch_faces[p].clear();
     Uv_atlas<TriangleMesh> atlas(tm);
-    const auto results = parameterize_patches(tm, trial, vpm, atlas, Fmm_distance_tag(), Fibonacci_heap_tag(),
-                                              Repair_options(), nullptr, true, options.threads);
+    const auto results = parameterize_patches<Fmm_distance_tag>(tm, vpm, trial, atlas, Patch_parameterization_options{Repair_options(), nullptr, true, options.threads});
     std::vector<double> scores(patches.size(), std::numeric_limits<double>::infinity());
     for(std::size_t i = 0; i < patches.size(); ++i) {
       const auto& r = results[patches[i]];
       if(!r.status) continue;
-      const Distortion_summary d = measure_distortion(tm, atlas.chart(r.chart).faces, vpm, atlas.chart_texture_map(r.chart));
+      const Distortion_summary d = measure_distortion(tm, vpm, atlas.chart(r.chart).faces, atlas.chart_texture_map(r.chart));
       if(d.injective()) scores[i] = d.stretch_l2;
     }
     return scores;
@@ -97,7 +96,7 @@ std::size_t choose_fallback_corners(const TriangleMesh& tm, VertexPointMap vpm, 
   std::vector<std::vector<Corners>> candidates;
   for(std::size_t i = 0; i < fallback.size(); ++i) {
     if(!(by_rule[i] > options.min_stretch)) continue;
-    const auto loops = patch_loops(tm, seg, fallback[i], vpm);
+    const auto loops = patch_loops(tm, vpm, seg, fallback[i]);
     if(loops.size() != 1 || loops.front().vertices.size() < 4) continue;
     const auto& loop = loops.front();
     const std::size_t m = loop.vertices.size();
@@ -208,14 +207,13 @@ public:
       to_map.patch_faces[p].clear();
     }
     Uv_atlas<TriangleMesh> atlas(*tm_);
-    const auto results = parameterize_patches(*tm_, to_map, vpm_, atlas, Fmm_distance_tag(), Fibonacci_heap_tag(),
-                                              Repair_options{false}, nullptr, true, options_.threads);
+    const auto results = parameterize_patches<Fmm_distance_tag>(*tm_, vpm_, to_map, atlas, Patch_parameterization_options{Repair_options{false}, nullptr, true, options_.threads});
     for(std::size_t p = 0; p < n; ++p) {
       if(!wanted[p]) continue;
       bool is_bad = !results[p].status;
       if(!is_bad) {
         const std::size_t c = results[p].chart;
-        const Distortion_summary d = measure_distortion(*tm_, atlas.chart(c).faces, vpm_, atlas.chart_texture_map(c));
+        const Distortion_summary d = measure_distortion(*tm_, vpm_, atlas.chart(c).faces, atlas.chart_texture_map(c));
         is_bad = !d.injective() || d.stretch_l2 > options_.max_stretch || d.area_mean > options_.max_area;
       }
       if(is_bad) bad.push_back(p);

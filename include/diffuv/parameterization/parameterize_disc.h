@@ -20,6 +20,20 @@
 
 namespace diffuv {
 
+/// Options of `parameterize_disc()`.
+struct Disc_parameterization_options {
+  /// Whether and how folds are repaired (`repair_folds()`); on by default,
+  /// `Repair_options{false}` gives the paper's raw method.
+  Repair_options repair;
+};
+
+/// What `parameterize_disc()` did.
+template <class TriangleMesh>
+struct Disc_parameterization_report {
+  Four_sides<typename boost::graph_traits<TriangleMesh>::vertex_descriptor> sides;  ///< the four sides used
+  Repair_report repair;                                                          ///< what the fold repair did
+};
+
 /// Parameterizes the disc mesh `tm` as a single chart of `atlas`.
 ///
 /// The mesh is checked to be a disc (`check_disc()`), its boundary loop is cut
@@ -27,27 +41,26 @@ namespace diffuv {
 /// counter-clockwise, see four_sides.h) or, if `corners` is empty, at
 /// `equal_arc_corners()` moved by `separate_flat_triangles()`; the diffusion coordinates of every vertex fill the chart.
 ///
+/// \tparam DistanceTag the distance diffused from each side (graph/distance_tags.h), `Default_distance_tag` (fast marching) by default
+/// \tparam HeapTag the Dijkstra's heap (graph/heap_tags.h), `Fibonacci_heap_tag` by default
 /// \tparam TriangleMesh a model of `FaceListGraph` with internal indices and vertex points
 ///         (e.g. `CGAL::Surface_mesh`)
 /// \param tm the mesh, which `atlas` maps
+/// \param vpm its points: edge lengths, corners, the repair and the chart's
+///        rectangle (fast marching and exact distances read the mesh's internal points)
 /// \param corners four boundary vertices, or none to choose them automatically
 /// \param atlas receives one chart holding every face and vertex of `tm`
-/// \param sides if not null, receives the four sides used
-/// \tparam DistanceTag the distance diffused from each side (distance_tags.h), `Default_distance_tag` (fast marching) by default
-/// \param repair whether and how folds are repaired (`repair_folds()`); on by default,
-///        `Repair_options{false}` gives the paper's raw method
-/// \param repair_report if not null, receives what the repair did; a map that
-///        still folds after the repair (numerically degenerate input only) is
-///        kept and reported there (`remaining_folded_faces`), not an error
+/// \param report if not null, receives the four sides used and what the repair
+///        did; a map that still folds after the repair (numerically degenerate
+///        input only) is kept and reported there (`repair.remaining_folded_faces`), not an error
 /// \returns the first problem met (not a disc, bad corners, ...) or `ok`; on failure
 ///          `atlas` is unchanged
-template <class TriangleMesh, class HeapTag = Fibonacci_heap_tag, class DistanceTag = Default_distance_tag>
-Status parameterize_disc(const TriangleMesh& tm,
+template <class DistanceTag = Default_distance_tag, class HeapTag = Fibonacci_heap_tag, class TriangleMesh,
+          class VertexPointMap>
+Status parameterize_disc(const TriangleMesh& tm, VertexPointMap vpm,
                          const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& corners,
-                         Uv_atlas<TriangleMesh>& atlas,
-                         Four_sides<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>* sides = nullptr,
-                         HeapTag = HeapTag(), DistanceTag = DistanceTag(),
-                         const Repair_options& repair = Repair_options(), Repair_report* repair_report = nullptr)
+                         Uv_atlas<TriangleMesh>& atlas, const Disc_parameterization_options& options = {},
+                         Disc_parameterization_report<TriangleMesh>* report = nullptr)
 {
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
   using Point_2 = typename Uv_atlas<TriangleMesh>::Point_2;
@@ -61,11 +74,10 @@ Status parameterize_disc(const TriangleMesh& tm,
   std::vector<vertex_descriptor> chosen = corners;
   if(corners.empty()) {
     // Equal arcs, then no triangle left flat on one side (see separate_flat_triangles()).
-    chosen = equal_arc_corners(tm, get(CGAL::vertex_point, tm), loop);
+    chosen = equal_arc_corners(tm, vpm, loop);
     std::array<std::size_t, 4> at{};
     for(std::size_t c = 0; c < 4; ++c)
       at[c] = static_cast<std::size_t>(std::find(loop.begin(), loop.end(), chosen[c]) - loop.begin());
-    const auto vpm = get(CGAL::vertex_point, tm);
     std::vector<double> loop_lengths(loop.size());
     for(std::size_t i = 0; i < loop.size(); ++i)
       loop_lengths[i] = std::sqrt(CGAL::to_double(CGAL::squared_distance(get(vpm, loop[i]), get(vpm, loop[(i + 1) % loop.size()]))));
@@ -79,11 +91,12 @@ Status parameterize_disc(const TriangleMesh& tm,
 
   auto index = get(boost::vertex_index, tm);
   std::vector<Point_2> uv_of(num_vertices(tm));
-  Diffusion_coordinates<TriangleMesh, HeapTag, DistanceTag> coordinates(tm);
-  status = coordinates.compute(four, edge_length_map(tm), boost::make_iterator_property_map(uv_of.begin(), index));
+  Diffusion_coordinates<TriangleMesh, DistanceTag, HeapTag> coordinates(tm);
+  status = coordinates.compute(four, edge_length_map(tm, vpm), boost::make_iterator_property_map(uv_of.begin(), index));
   if(!status) return status;
-  repair_folds(tm, get(CGAL::vertex_point, tm), four, boost::make_iterator_property_map(uv_of.begin(), index),
-               repair_report, repair);
+  Disc_parameterization_report<TriangleMesh> local;
+  Disc_parameterization_report<TriangleMesh>& r = report ? *report : local;
+  repair_folds(tm, vpm, four, boost::make_iterator_property_map(uv_of.begin(), index), options.repair, &r.repair);
 
   std::vector<vertex_descriptor> chart_vertices;
   std::vector<Point_2> chart_uv;
@@ -95,10 +108,10 @@ Status parameterize_disc(const TriangleMesh& tm,
   }
   std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> chart_faces(faces(tm).begin(), faces(tm).end());
   const std::size_t chart = atlas.add_chart(std::move(chart_faces), std::move(chart_vertices), std::move(chart_uv));
-  const auto size = stretch_optimal_rectangle(tm, atlas.chart(chart).faces, get(CGAL::vertex_point, tm),
-                                              atlas.chart_uv_map(chart), side_length_rectangle(four, get(CGAL::vertex_point, tm)));
+  const auto size = stretch_optimal_rectangle(tm, vpm, atlas.chart(chart).faces, atlas.chart_uv_map(chart),
+                                              side_length_rectangle(four, vpm));
   atlas.set_chart_size(chart, size[0], size[1]);
-  if(sides) *sides = std::move(four);
+  r.sides = std::move(four);
   return Status();
 }
 

@@ -88,6 +88,17 @@ void for_each_patch(std::size_t patches, std::size_t threads, Body body)
 
 } // namespace internal
 
+/// Options of `parameterize_patches()`.
+struct Patch_parameterization_options {
+  Repair_options repair;  ///< whether and how folds are repaired (`repair_folds()`); on by default
+  /// If given, #P entries: for each patch, the corners of the same region on
+  /// another mesh to follow (see `region_sides()`; correspondence).
+  const std::vector<Corner_names>* corner_names = nullptr;
+  bool move_corners_off_ears = true;  ///< see `Region_sides_options`
+  /// How many threads map patches: 0 as many as the machine has, 1 one after the other.
+  std::size_t threads = 0;
+};
+
 /// Parameterizes every patch of `seg` as a chart of `atlas`: canonical sides
 /// from the neighbouring regions (`region_sides()`), then the diffusion
 /// coordinates on the patch, with edge lengths computed once for the whole
@@ -95,7 +106,7 @@ void for_each_patch(std::size_t patches, std::size_t threads, Body body)
 /// `Fmm_distance_tag` by default; `Graph_distance_tag`, the paper's;
 /// `Exact_distance_tag`).
 ///
-/// Folds are then repaired (`repair_folds()`) unless `repair.enabled` is false.
+/// Folds are then repaired (`repair_folds()`) unless `options.repair.enabled` is false.
 ///
 /// With graph distances and no repair (the paper's method) each patch is
 /// copied into a compact graph (`Patch_graph`) for its four runs; otherwise
@@ -108,22 +119,18 @@ void for_each_patch(std::size_t patches, std::size_t threads, Body body)
 /// A patch that fails (not a disc, too short a boundary) gets no chart; the
 /// others are still mapped.
 ///
-/// \param corner_names if given, #P entries: corners to follow (see `region_sides()`)
-/// \param move_corners_off_ears see `region_sides()`
-/// \param threads how many threads map patches: 0 (default) as many as the
-///        machine has, 1 one after the other
+/// \tparam DistanceTag the distance diffused from each side (graph/distance_tags.h)
+/// \tparam HeapTag the Dijkstra's heap (graph/heap_tags.h)
 /// \returns #P results, one per patch
-template <class TriangleMesh, class VertexPointMap, class DistanceTag = Default_distance_tag,
-          class HeapTag = Fibonacci_heap_tag>
-std::vector<Patch_result<TriangleMesh>> parameterize_patches(const TriangleMesh& tm,
+template <class DistanceTag = Default_distance_tag, class HeapTag = Fibonacci_heap_tag, class TriangleMesh,
+          class VertexPointMap>
+std::vector<Patch_result<TriangleMesh>> parameterize_patches(const TriangleMesh& tm, VertexPointMap vpm,
                                                              const Segmentation<TriangleMesh>& seg,
-                                                             VertexPointMap vpm, Uv_atlas<TriangleMesh>& atlas,
-                                                             DistanceTag = DistanceTag(), HeapTag = HeapTag(),
-                                                             const Repair_options& repair = Repair_options(),
-                                                             const std::vector<Corner_names>* corner_names = nullptr,
-                                                             bool move_corners_off_ears = true,
-                                                             std::size_t threads = 0)
+                                                             Uv_atlas<TriangleMesh>& atlas,
+                                                             const Patch_parameterization_options& options = {})
 {
+  const Repair_options& repair = options.repair;
+  const std::size_t threads = options.threads;
   using Patch = CGAL::Face_filtered_graph<TriangleMesh>;
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
   const auto lengths = edge_length_map(tm, vpm);
@@ -137,9 +144,12 @@ std::vector<Patch_result<TriangleMesh>> parameterize_patches(const TriangleMesh&
     const auto start = std::chrono::steady_clock::now();
     r.status = check_patch_disc(tm, seg, p);
     if(r.status)
-      r.status = region_sides(tm, seg, p, vpm, r.sides, &r.side_report,
-                              corner_names && p < corner_names->size() ? &(*corner_names)[p] : nullptr,
-                              move_corners_off_ears);
+      r.status = region_sides(tm, vpm, seg, p, r.sides,
+                              Region_sides_options{options.corner_names && p < options.corner_names->size()
+                                                       ? &(*options.corner_names)[p]
+                                                       : nullptr,
+                                                   options.move_corners_off_ears},
+                              &r.side_report);
     if(!r.status) return;
 
     if(compact_graph) {
@@ -150,7 +160,7 @@ std::vector<Patch_result<TriangleMesh>> parameterize_patches(const TriangleMesh&
                lengths);
       const auto local_sides = pg.local_sides(tm, r.sides);
       chart.uv.resize(pg.number_of_vertices());
-      Diffusion_coordinates<typename Patch_graph<TriangleMesh>::Graph, HeapTag, Graph_distance_tag> coordinates(
+      Diffusion_coordinates<typename Patch_graph<TriangleMesh>::Graph, Graph_distance_tag, HeapTag> coordinates(
           pg.graph());
       // One patch (a disc mesh): its four passes in parallel instead.
       const bool parallel_passes = threads != 1 && seg.number_of_patches() == 1;
@@ -164,10 +174,10 @@ std::vector<Patch_result<TriangleMesh>> parameterize_patches(const TriangleMesh&
       const Patch patch(tm, seg.patch_faces[p]);
       auto pindex = get(boost::vertex_index, patch);
       chart.uv.resize(num_vertices(patch));
-      Diffusion_coordinates<Patch, HeapTag, DistanceTag> coordinates(patch);
+      Diffusion_coordinates<Patch, DistanceTag, HeapTag> coordinates(patch);
       r.status = coordinates.compute(r.sides, lengths, boost::make_iterator_property_map(chart.uv.begin(), pindex));
       if(!r.status) return;
-      repair_folds(patch, vpm, r.sides, boost::make_iterator_property_map(chart.uv.begin(), pindex), &r.repair, repair);
+      repair_folds(patch, vpm, r.sides, boost::make_iterator_property_map(chart.uv.begin(), pindex), repair, &r.repair);
       chart.vertices.resize(num_vertices(patch));
       for(vertex_descriptor v : vertices(patch)) chart.vertices[get(pindex, v)] = v;
     }
@@ -179,7 +189,7 @@ std::vector<Patch_result<TriangleMesh>> parameterize_patches(const TriangleMesh&
     const auto start = std::chrono::steady_clock::now();
     results[p].chart = atlas.add_chart(seg.patch_faces[p], std::move(charts[p].vertices), std::move(charts[p].uv));
     const std::size_t c = results[p].chart;
-    const auto size = stretch_optimal_rectangle(tm, atlas.chart(c).faces, vpm, atlas.chart_uv_map(c),
+    const auto size = stretch_optimal_rectangle(tm, vpm, atlas.chart(c).faces, atlas.chart_uv_map(c),
                                                 side_length_rectangle(results[p].sides, vpm));
     atlas.set_chart_size(c, size[0], size[1]);
     results[p].milliseconds +=

@@ -66,7 +66,7 @@ struct Repair_options {
 /// What `repair_folds()` did to one patch (all zero when the repair is off).
 struct Repair_report {
   std::size_t folded_faces = 0;        ///< faces flipped or degenerate, or around a vertex the map winds around twice, before the repair (forced ones excluded)
-  std::size_t forced_degenerate = 0;   ///< faces with all three vertices on one side, or around interior vertices whose border neighbours all are: flat in any map onto the square
+  std::size_t flat_triangles = 0;   ///< faces with all three vertices on one side, or around interior vertices whose border neighbours all are: flat in any map onto the square
   std::size_t moved_vertices = 0;      ///< interior vertices whose (u,v) changed
   std::size_t moved_border_vertices = 0;  ///< border vertices re-spaced because their side was not monotone, or was squeezed at a near-fold
   std::size_t rounds = 0;              ///< linear solves
@@ -113,7 +113,7 @@ inline bool positive_triangle(const std::array<std::size_t, 3>& t, const std::ve
 template <class TriangleMesh, class VertexPointMap, class UvMap>
 Status repair_folds(const TriangleMesh& tm, VertexPointMap vpm,
                     const Four_sides<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& sides, UvMap uv,
-                    Repair_report* report = nullptr, const Repair_options& options = Repair_options())
+                    const Repair_options& options = Repair_options(), Repair_report* report = nullptr)
 {
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
   using Point_2 = typename boost::property_traits<UvMap>::value_type;
@@ -179,7 +179,7 @@ Status repair_folds(const TriangleMesh& tm, VertexPointMap vpm,
           for(std::size_t f : faces_of[i]) p.forced[f] = true;
     }
   }
-  r.forced_degenerate = static_cast<std::size_t>(std::count(p.forced.begin(), p.forced.end(), true));
+  r.flat_triangles = static_cast<std::size_t>(std::count(p.forced.begin(), p.forced.end(), true));
   const std::vector<double> u0 = u, v0 = v;
 
   auto write_back = [&]() {

@@ -54,6 +54,16 @@ struct Side_report {
   bool chosen = false;      ///< the corners came with the patch (`Segmentation::patch_corners`, the four-sided layout)
 };
 
+/// Options of `region_sides()`.
+struct Region_sides_options {
+  /// If given, the corners of the same region on another mesh (its
+  /// `Side_report::names`), to follow (see `region_sides()`).
+  const Corner_names* names = nullptr;
+  /// Move a corner onto an ear's tip, or a few vertices along the border, so
+  /// that no triangle is flat (`separate_flat_triangles()`).
+  bool move_corners_off_ears = true;
+};
+
 /// Computes the four sides of disc patch `p` from the runs of its neighbours.
 ///
 /// Rule (deterministic):
@@ -73,7 +83,7 @@ struct Side_report {
 /// depends only on the labels and the surface orientation, not on vertex
 /// or face order.
 ///
-/// Given `names` (the corners of the same region on another mesh, from its
+/// Given `options.names` (the corners of the same region on another mesh, from its
 /// `Side_report::names`), the corners are the junctions and run middles of
 /// those names instead, in the same order, whenever each name is found exactly
 /// once here and the four keep their counter-clockwise order; else the rule
@@ -81,7 +91,7 @@ struct Side_report {
 /// (painted, transferred) then still get the same corners, where the rule's
 /// choices among nearly equal run lengths could differ.
 ///
-/// With `move_off_ears` (default), a corner (the layout's too) may then move
+/// With `options.move_corners_off_ears` (default), a corner (the layout's too) may then move
 /// onto the tip of an ear, or a few vertices along the border, so that no
 /// triangle is flat (`separate_flat_triangles()`); such a move
 /// can go half a side away, so correspondence turns it off on both meshes.
@@ -89,12 +99,14 @@ struct Side_report {
 /// \pre patch `p` is a topological disc (`check_patch_disc()`)
 /// \returns `border_too_short` if the boundary has fewer than four vertices, else `ok`
 template <class TriangleMesh, class VertexPointMap>
-Status region_sides(const TriangleMesh& tm, const Segmentation<TriangleMesh>& seg, std::size_t p, VertexPointMap vpm,
+Status region_sides(const TriangleMesh& tm, VertexPointMap vpm, const Segmentation<TriangleMesh>& seg, std::size_t p,
                     Four_sides<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& sides,
-                    Side_report* report = nullptr, const Corner_names* names = nullptr, bool move_off_ears = true)
+                    const Region_sides_options& options = Region_sides_options(), Side_report* report = nullptr)
 {
+  const Corner_names* names = options.names;
+  const bool move_off_ears = options.move_corners_off_ears;
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
-  const auto loops = patch_loops(tm, seg, p, vpm);
+  const auto loops = patch_loops(tm, vpm, seg, p);
   if(loops.size() != 1)
     return Status(Status_code::several_borders, "patch " + std::to_string(p));
   const Patch_loop<TriangleMesh>& loop = loops.front();

@@ -112,8 +112,8 @@ struct Patch_loop {
 /// \tparam TriangleMesh a model of `FaceListGraph` with internal face index
 /// \param face_labels #F entries, by face index
 template <class TriangleMesh, class VertexPointMap>
-Segmentation<TriangleMesh> patches_from_labels(const TriangleMesh& tm, const std::vector<int>& face_labels,
-                                               VertexPointMap vpm,
+Segmentation<TriangleMesh> patches_from_labels(const TriangleMesh& tm, VertexPointMap vpm,
+                                               const std::vector<int>& face_labels,
                                                int ignore_label = std::numeric_limits<int>::min())
 {
   using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
@@ -178,8 +178,8 @@ Segmentation<TriangleMesh> patches_from_labels(const TriangleMesh& tm, const std
 /// Returns the boundary loops of patch `p`, each counter-clockwise, with the
 /// patch across each edge. A disc patch has exactly one.
 template <class TriangleMesh, class VertexPointMap>
-std::vector<Patch_loop<TriangleMesh>> patch_loops(const TriangleMesh& tm, const Segmentation<TriangleMesh>& seg,
-                                                  std::size_t p, VertexPointMap vpm)
+std::vector<Patch_loop<TriangleMesh>> patch_loops(const TriangleMesh& tm, VertexPointMap vpm,
+                                                  const Segmentation<TriangleMesh>& seg, std::size_t p)
 {
   using halfedge_descriptor = typename boost::graph_traits<TriangleMesh>::halfedge_descriptor;
   auto findex = get(boost::face_index, tm);
@@ -229,8 +229,8 @@ std::vector<Patch_loop<TriangleMesh>> patch_loops(const TriangleMesh& tm, const 
 ///
 /// \returns how many patches were merged
 template <class TriangleMesh, class VertexPointMap>
-std::size_t merge_small_patches(const TriangleMesh& tm, std::vector<int>& face_labels,
-                                Segmentation<TriangleMesh>& seg, VertexPointMap vpm,
+std::size_t merge_small_patches(const TriangleMesh& tm, VertexPointMap vpm,
+                                std::vector<int>& face_labels, Segmentation<TriangleMesh>& seg,
                                 std::size_t min_boundary_vertices = 4)
 {
   auto findex = get(boost::face_index, tm);
@@ -238,7 +238,7 @@ std::size_t merge_small_patches(const TriangleMesh& tm, std::vector<int>& face_l
   for(bool changed = true; changed;) {
     changed = false;
     for(std::size_t p = 0; p < seg.number_of_patches() && !changed; ++p) {
-      const auto loops = patch_loops(tm, seg, p, vpm);
+      const auto loops = patch_loops(tm, vpm, seg, p);
       std::size_t boundary_vertices = 0;
       std::map<std::size_t, double> shared; // neighbour patch -> shared length
       for(const auto& loop : loops) {
@@ -277,7 +277,7 @@ std::size_t merge_small_patches(const TriangleMesh& tm, std::vector<int>& face_l
         }
       }
       for(auto f : seg.patch_faces[p]) face_labels[get(findex, f)] = seg.patch_label[best];
-      seg = patches_from_labels(tm, face_labels, vpm);
+      seg = patches_from_labels(tm, vpm, face_labels);
       ++merged;
       changed = true;
     }
@@ -331,7 +331,7 @@ Status check_patch_disc(const TriangleMesh& tm, const Segmentation<TriangleMesh>
   if(queue.size() != pf.size())
     return fail(Status_code::disconnected_mesh, "");
 
-  const auto loops = patch_loops(tm, seg, p, get(CGAL::vertex_point, tm));
+  const auto loops = patch_loops(tm, get(CGAL::vertex_point, tm), seg, p);
   if(loops.empty()) return fail(Status_code::no_border, "");
   if(loops.size() > 1) return fail(Status_code::several_borders, std::to_string(loops.size()) + " boundary loops");
   std::vector<std::size_t> loop_ids;
@@ -407,8 +407,8 @@ namespace internal {
 // same face whatever the numbering, the position or the orientation of the mesh.
 template <class TriangleMesh, class VertexPointMap, class Point, class Before>
 std::size_t farthest_from_area_centroid(const TriangleMesh& tm,
-                                        const std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>& region,
-                                        VertexPointMap vpm, const std::vector<Point>& centroids, Before before)
+                                        VertexPointMap vpm,
+                                        const std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>& region, const std::vector<Point>& centroids, Before before)
 {
   double cx = 0, cy = 0, cz = 0, area = 0;
   for(std::size_t i = 0; i < region.size(); ++i) {
@@ -460,8 +460,8 @@ struct Voronoi_options {
 /// \returns the number of seeds used
 template <class TriangleMesh, class VertexPointMap>
 std::size_t voronoi_discs(const TriangleMesh& tm,
-                          const std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>& region,
-                          VertexPointMap vpm, std::vector<int>& face_labels, int first_label,
+                          VertexPointMap vpm,
+                          const std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>& region, std::vector<int>& face_labels, int first_label,
                           const Voronoi_options& options = Voronoi_options())
 {
   using Dual = boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS, boost::no_property,
@@ -505,7 +505,7 @@ std::size_t voronoi_discs(const TriangleMesh& tm,
 
   // The first seed (lowest face index on a tie).
   const std::size_t first_seed = internal::farthest_from_area_centroid(
-      tm, region, vpm, centroids, [&](std::size_t i, std::size_t j) { return get(findex, region[i]) < get(findex, region[j]); });
+      tm, vpm, region, centroids, [&](std::size_t i, std::size_t j) { return get(findex, region[i]) < get(findex, region[j]); });
   std::vector<std::size_t> seeds = {first_seed};
   const std::size_t target = options.patches > 0 ? options.patches : 1;
   dijkstra.run(seeds, weight, dmap, omap);
@@ -530,8 +530,8 @@ std::size_t voronoi_discs(const TriangleMesh& tm,
     std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> order;
     for(std::size_t i : by_distance) order.push_back(region[i]);
     smooth_region_borders(tm, labels, 3, std::numeric_limits<int>::min(), &order);
-    Segmentation<TriangleMesh> seg = patches_from_labels(tm, labels, vpm);
-    merge_small_patches(tm, labels, seg, vpm);
+    Segmentation<TriangleMesh> seg = patches_from_labels(tm, vpm, labels);
+    merge_small_patches(tm, vpm, labels, seg);
 
     // One new seed in every patch that is not a disc, where it is farthest from the seeds.
     std::vector<std::size_t> added;

@@ -104,9 +104,9 @@ void needed_corners(const TriangleMesh& tm, const Segmentation<TriangleMesh>& se
 /// region label all around (not the mesh border). Labels, not patches, so that
 /// a cap stays one when the region around it was cut into several pieces.
 template <class TriangleMesh, class VertexPointMap>
-bool is_cap(const TriangleMesh& tm, const Segmentation<TriangleMesh>& seg, std::size_t p, VertexPointMap vpm)
+bool is_cap(const TriangleMesh& tm, VertexPointMap vpm, const Segmentation<TriangleMesh>& seg, std::size_t p)
 {
-  const auto loops = patch_loops(tm, seg, p, vpm);
+  const auto loops = patch_loops(tm, vpm, seg, p);
   if(loops.size() != 1) return false;
   const auto& n = loops.front().neighbour;
   constexpr std::size_t border = Patch_loop<TriangleMesh>::mesh_border;
@@ -125,11 +125,11 @@ bool is_cap(const TriangleMesh& tm, const Segmentation<TriangleMesh>& seg, std::
 /// \returns false (and leaves `seg` unchanged) if the cut does not give two disc
 ///          patches with at least four boundary vertices each
 template <class TriangleMesh, class VertexPointMap>
-bool split_cap(const TriangleMesh& tm, Segmentation<TriangleMesh>& seg, std::size_t p, VertexPointMap vpm)
+bool split_cap(const TriangleMesh& tm, VertexPointMap vpm, Segmentation<TriangleMesh>& seg, std::size_t p)
 {
   using Patch = CGAL::Face_filtered_graph<TriangleMesh>;
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
-  const auto loops = patch_loops(tm, seg, p, vpm);
+  const auto loops = patch_loops(tm, vpm, seg, p);
   if(loops.size() != 1) return false;
   const auto& loop = loops.front();
   const std::size_t n = loop.vertices.size();
@@ -200,7 +200,7 @@ bool split_cap(const TriangleMesh& tm, Segmentation<TriangleMesh>& seg, std::siz
   trial.split(p, pieces, get(boost::face_index, tm));
   for(std::size_t k = 0; k < 2; ++k) {
     if(!check_patch_disc(tm, trial, p + k)) return false;
-    const auto piece_loops = patch_loops(tm, trial, p + k, vpm);
+    const auto piece_loops = patch_loops(tm, vpm, trial, p + k);
     if(piece_loops.size() != 1 || piece_loops.front().vertices.size() < 4) return false;
   }
   seg = std::move(trial);
@@ -216,7 +216,7 @@ bool split_cap(const TriangleMesh& tm, Segmentation<TriangleMesh>& seg, std::siz
 /// face is flat in the map). With more than four, runs are merged into sides
 /// and some ear stays flat whatever the corners; where the border is jagged
 /// (a painted region's edge) that is the rule, not the exception (measured on
-/// cow cut into height bands: patches of 5-18 runs with 1-6 flat faces each).
+/// cow cut into height bands: patches of 5-18 runs with 1-6 flat triangles each).
 /// A cut from junction to junction makes both ends corners of both pieces and
 /// keeps every neighbour's run whole on one piece: no neighbour gains a
 /// junction.
@@ -237,14 +237,14 @@ bool split_cap(const TriangleMesh& tm, Segmentation<TriangleMesh>& seg, std::siz
 ///          place, with no chosen corners and the parts `Segmentation::split()`
 ///          gives (1, 2 for one cut; a piece cut again gets 11, 12, ...)
 template <class TriangleMesh, class VertexPointMap>
-std::size_t split_at_junctions(const TriangleMesh& tm, Segmentation<TriangleMesh>& seg, std::size_t p, VertexPointMap vpm,
+std::size_t split_at_junctions(const TriangleMesh& tm, VertexPointMap vpm, Segmentation<TriangleMesh>& seg, std::size_t p,
                                double max_cut_ratio = 0.5)
 {
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
   using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
   constexpr std::size_t none = std::numeric_limits<std::size_t>::max();
   auto findex = get(boost::face_index, tm);
-  const auto loops = patch_loops(tm, seg, p, vpm);
+  const auto loops = patch_loops(tm, vpm, seg, p);
   if(loops.size() != 1) return 1;
   const auto& loop = loops.front();
   const std::size_t n = loop.vertices.size();
@@ -374,7 +374,7 @@ std::size_t split_at_junctions(const TriangleMesh& tm, Segmentation<TriangleMesh
     for(std::size_t q = p; q < p + 2 && discs; ++q) {
       discs = static_cast<bool>(check_patch_disc(tm, *trial, q));
       if(!discs) break;
-      const auto piece_loops = patch_loops(tm, *trial, q, vpm);
+      const auto piece_loops = patch_loops(tm, vpm, *trial, q);
       discs = piece_loops.front().vertices.size() >= 4;
       std::vector<std::size_t> piece_needed;
       std::vector<char> piece_junction;
@@ -390,8 +390,8 @@ std::size_t split_at_junctions(const TriangleMesh& tm, Segmentation<TriangleMesh
   if(!cut_made) return 1;
   seg = std::move(*cut_made);
   // Each piece again, the later one first so that p's index stays put.
-  const std::size_t second = split_at_junctions(tm, seg, p + 1, vpm, max_cut_ratio);
-  return split_at_junctions(tm, seg, p, vpm, max_cut_ratio) + second;
+  const std::size_t second = split_at_junctions(tm, vpm, seg, p + 1, max_cut_ratio);
+  return split_at_junctions(tm, vpm, seg, p, max_cut_ratio) + second;
 }
 
 /// Cuts non-disc patch `p` into disc pieces with `voronoi_discs()` (parts 1, 2, ...).
@@ -401,13 +401,13 @@ std::size_t split_at_junctions(const TriangleMesh& tm, Segmentation<TriangleMesh
 /// the mesh's faces in the patch, at least 2: a band needs two pieces, a whole
 /// closed mesh labelled as one region as many as automatic patches would use.
 template <class TriangleMesh, class VertexPointMap>
-std::size_t cut_into_discs(const TriangleMesh& tm, Segmentation<TriangleMesh>& seg, std::size_t p, VertexPointMap vpm,
+std::size_t cut_into_discs(const TriangleMesh& tm, VertexPointMap vpm, Segmentation<TriangleMesh>& seg, std::size_t p,
                            Voronoi_options options = Voronoi_options())
 {
   auto findex = get(boost::face_index, tm);
   std::vector<int> cells(num_faces(tm), -1);
   options.patches = std::max<std::size_t>(2, options.patches * seg.patch_faces[p].size() / num_faces(tm));
-  voronoi_discs(tm, seg.patch_faces[p], vpm, cells, 0, options);
+  voronoi_discs(tm, vpm, seg.patch_faces[p], cells, 0, options);
   std::map<int, std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>> by_cell;
   for(auto f : seg.patch_faces[p]) by_cell[cells[get(findex, f)]].push_back(f);
   if(by_cell.size() < 2) return 1;

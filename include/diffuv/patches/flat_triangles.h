@@ -7,9 +7,9 @@
 // (`separate_flat_triangles()`); where that would leave another face flat
 // (a junction face between two runs that the side merges, measured on man),
 // the face changes patch instead: it joins a neighbour across one of its
-// border edges, if that leaves fewer flat faces in every patch it touches.
-#ifndef DIFFUV_PATCHES_FLAT_FACES_H
-#define DIFFUV_PATCHES_FLAT_FACES_H
+// border edges, if that leaves fewer flat triangles in every patch it touches.
+#ifndef DIFFUV_PATCHES_FLAT_TRIANGLES_H
+#define DIFFUV_PATCHES_FLAT_TRIANGLES_H
 
 #include <diffuv/patches/corners.h>
 #include <diffuv/patches/region_sides.h>
@@ -30,7 +30,7 @@ namespace diffuv {
 /// (a corner lies on its two sides).
 template <class TriangleMesh>
 std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>
-flat_faces(const TriangleMesh& tm, const Segmentation<TriangleMesh>& seg, std::size_t p,
+flat_triangles(const TriangleMesh& tm, const Segmentation<TriangleMesh>& seg, std::size_t p,
            const Four_sides<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& sides)
 {
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
@@ -57,12 +57,12 @@ flat_faces(const TriangleMesh& tm, const Segmentation<TriangleMesh>& seg, std::s
 
 /// Hands each face that stays flat after `region_sides()` (corners moved off
 /// ears included) to a neighbouring patch across one of its edges, when the
-/// patches it touches all stay discs with four sides, have fewer flat faces
+/// patches it touches all stay discs with four sides, have fewer flat triangles
 /// together, and keep their corners except for moves onto the face's own
 /// vertices (so a hand-off never re-routes a side far from the face). Faces
 /// still flat after that may then also go to a neighbour with corners moved
 /// anywhere. A face in or next to a quad of the layout (corners chosen by
-/// the layout) is never handed: the layout stays conforming. Patches are visited in order, a patch's flat faces by
+/// the layout) is never handed: the layout stays conforming. Patches are visited in order, a patch's flat triangles by
 /// their centroids, neighbours in patch order, so the result depends only on
 /// the segmentation and the geometry. Labels and the number and
 /// order of patches are unchanged; a handed face takes its new patch's label.
@@ -71,7 +71,7 @@ flat_faces(const TriangleMesh& tm, const Segmentation<TriangleMesh>& seg, std::s
 ///        sub-patches of one labelled region), so regions keep their borders
 /// \returns how many faces changed patch
 template <class TriangleMesh, class VertexPointMap>
-std::size_t hand_flat_faces_to_neighbours(const TriangleMesh& tm, Segmentation<TriangleMesh>& seg, VertexPointMap vpm,
+std::size_t hand_flat_triangles_to_neighbours(const TriangleMesh& tm, VertexPointMap vpm, Segmentation<TriangleMesh>& seg,
                                           bool keep_labels = false, std::size_t max_rounds = 4)
 {
   using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
@@ -79,7 +79,7 @@ std::size_t hand_flat_faces_to_neighbours(const TriangleMesh& tm, Segmentation<T
   constexpr std::size_t unusable = std::numeric_limits<std::size_t>::max();
   auto findex = get(boost::face_index, tm);
 
-  // The flat faces of patch q, or `unusable` when it is no disc or has no
+  // The flat triangles of patch q, or `unusable` when it is no disc or has no
   // four sides; `corners` receives its corners.
   std::vector<face_descriptor> flat;
   std::vector<vertex_descriptor> corners;
@@ -88,8 +88,8 @@ std::size_t hand_flat_faces_to_neighbours(const TriangleMesh& tm, Segmentation<T
     corners.clear();
     if(!check_patch_disc(tm, seg, q)) return unusable;
     Four_sides<vertex_descriptor> sides;
-    if(!region_sides(tm, seg, q, vpm, sides)) return unusable;
-    flat = flat_faces(tm, seg, q, sides);
+    if(!region_sides(tm, vpm, seg, q, sides)) return unusable;
+    flat = flat_triangles(tm, seg, q, sides);
     corners.assign(sides.corners.begin(), sides.corners.end());
     return flat.size();
   };
@@ -147,7 +147,7 @@ std::size_t hand_flat_faces_to_neighbours(const TriangleMesh& tm, Segmentation<T
           }
           std::sort(touched.begin(), touched.end());
           touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
-          // The flat faces of p and the touched patches together, and their
+          // The flat triangles of p and the touched patches together, and their
           // corners (p's first, then the touched patches' in order).
           std::vector<vertex_descriptor> all_corners;
           auto total_flat = [&]() {
@@ -204,4 +204,4 @@ std::size_t hand_flat_faces_to_neighbours(const TriangleMesh& tm, Segmentation<T
 
 } // namespace diffuv
 
-#endif // DIFFUV_PATCHES_FLAT_FACES_H
+#endif // DIFFUV_PATCHES_FLAT_TRIANGLES_H
