@@ -33,7 +33,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using diffuv::Label_source;
-using diffuv::Rgb;
+using diffuv::Color;
 using diffuv_test::Mesh;
 using diffuv_test::Point_3;
 using face_descriptor = boost::graph_traits<Mesh>::face_descriptor;
@@ -196,10 +196,10 @@ TEST_F(LabelsFile, WriteThenRead)
 
 TEST(LabelsPalette, WellSeparatedThenDistinct)
 {
-  EXPECT_EQ(diffuv::label_color(0), (Rgb{31, 119, 180}));
-  EXPECT_EQ(diffuv::label_color(3), (Rgb{214, 39, 40}));
-  EXPECT_EQ(diffuv::label_color(19), (Rgb{158, 218, 229}));
-  std::set<Rgb> seen;
+  EXPECT_EQ(diffuv::label_color(0), (Color{31, 119, 180}));
+  EXPECT_EQ(diffuv::label_color(3), (Color{214, 39, 40}));
+  EXPECT_EQ(diffuv::label_color(19), (Color{158, 218, 229}));
+  std::set<Color> seen;
   const int n = 1 << 17;
   for(int label = 0; label < n; ++label)
     seen.insert(diffuv::label_color(label));
@@ -209,7 +209,7 @@ TEST(LabelsPalette, WellSeparatedThenDistinct)
 // ---------------------------------------------------------------------------
 // Painted regions in CGAL's coloured meshes
 
-TEST_F(LabelsPainted, ColoredTetraPlyFaceColours)
+TEST_F(LabelsPainted, ColoredTetraPlyFaceColors)
 {
   // The faces of colored_tetra.ply (red green blue, then an int label):
   //   3 0 1 2 255 0 0 -1 / 3 0 3 1 0 255 0 1 / 3 1 3 2 0 0 255 -1 / 3 0 2 3 255 0 255 0
@@ -221,7 +221,7 @@ TEST_F(LabelsPainted, ColoredTetraPlyFaceColours)
   EXPECT_EQ(p.source, Label_source::face_colors);
   EXPECT_EQ(p.property, "red/green/blue");
   EXPECT_EQ(p.polygon_labels, (std::vector<int>{2, 1, 0, 3}));
-  EXPECT_EQ(p.colors, (std::vector<Rgb>{{0, 0, 255}, {0, 255, 0}, {255, 0, 0}, {255, 0, 255}}));
+  EXPECT_EQ(p.colors, (std::vector<Color>{{0, 0, 255}, {0, 255, 0}, {255, 0, 0}, {255, 0, 255}}));
 
   // CGAL's reader gives the same colours, face by face.
   std::vector<Point_3> points;
@@ -230,7 +230,7 @@ TEST_F(LabelsPainted, ColoredTetraPlyFaceColours)
   ASSERT_TRUE(cgal_read_ply(file, points, polygons, colors));
   ASSERT_EQ(colors.size(), p.polygon_labels.size());
   for(std::size_t j = 0; j < colors.size(); ++j)
-    EXPECT_EQ(p.colors[p.polygon_labels[j]], (Rgb{colors[j].r(), colors[j].g(), colors[j].b()})) << j;
+    EXPECT_EQ(p.colors[p.polygon_labels[j]], (Color{colors[j].r(), colors[j].g(), colors[j].b()})) << j;
 
   // Asked for, the label property is read, and its -1 is an error.
   const diffuv::Input_error e = painted_error(file, "label");
@@ -249,7 +249,7 @@ TEST_F(LabelsPainted, MeshWithColorsOff)
   EXPECT_EQ(p.source, Label_source::face_colors);
   EXPECT_EQ(p.property, "rgb");
   EXPECT_EQ(p.polygon_labels, (std::vector<int>{1, 1, 1, 0}));
-  EXPECT_EQ(p.colors, (std::vector<Rgb>{{0, 0, 230}, {230, 0, 0}}));
+  EXPECT_EQ(p.colors, (std::vector<Color>{{0, 0, 230}, {230, 0, 0}}));
 
   // CGAL reads the same regions, but truncates 0.9 * 255 to 229.
   std::vector<Point_3> points;
@@ -267,7 +267,7 @@ TEST_F(LabelsPainted, MeshWithColorsOff)
 
 const std::string square_points = "0 0 0\n1 0 0\n1 1 0\n0 1 0\n";
 
-TEST_F(LabelsPainted, OffFaceColoursWithoutC)
+TEST_F(LabelsPainted, OffFaceColorsWithoutC)
 {
   // MeshLab writes face colours (integers and alpha) under a plain "OFF".
   const std::string file =
@@ -275,7 +275,7 @@ TEST_F(LabelsPainted, OffFaceColoursWithoutC)
   const diffuv::Painted_labels p = diffuv::read_painted_labels(file);
   EXPECT_EQ(p.source, Label_source::face_colors);
   EXPECT_EQ(p.polygon_labels, (std::vector<int>{1, 0}));
-  EXPECT_EQ(p.colors, (std::vector<Rgb>{{20, 20, 200}, {200, 10, 10}}));
+  EXPECT_EQ(p.colors, (std::vector<Color>{{20, 20, 200}, {200, 10, 10}}));
 
   // A pitfall: CGAL's reader reads face colours only after a "COFF" header.
   std::vector<Point_3> points;
@@ -286,7 +286,7 @@ TEST_F(LabelsPainted, OffFaceColoursWithoutC)
   EXPECT_TRUE(colors.empty());
 }
 
-TEST_F(LabelsPainted, CoffVertexColours)
+TEST_F(LabelsPainted, CoffVertexColors)
 {
   // Vertex colours (floats with alpha) and none on the faces: vertex labels
   // red = 1, blue = 0 (blue sorts first): 1 1 0 0. Face 0 (1, 1, 0) -> 1,
@@ -297,7 +297,7 @@ TEST_F(LabelsPainted, CoffVertexColours)
   EXPECT_EQ(p.source, Label_source::vertex_colors);
   EXPECT_EQ(p.property, "rgb");
   EXPECT_EQ(p.polygon_labels, (std::vector<int>{1, 0}));
-  EXPECT_EQ(p.colors, (std::vector<Rgb>{{0, 0, 255}, {255, 0, 0}}));
+  EXPECT_EQ(p.colors, (std::vector<Color>{{0, 0, 255}, {255, 0, 0}}));
 
   // Without colours, and for OBJ and STL: none.
   const std::string plain = write("plain.off", "OFF\n4 2 0\n" + square_points + "3 0 1 2\n3 0 2 3\n");
@@ -383,7 +383,7 @@ std::string meshlab_ply(bool big)
   return b.s;
 }
 
-TEST_F(LabelsPainted, MeshLabBinaryPlyFaceColours)
+TEST_F(LabelsPainted, MeshLabBinaryPlyFaceColors)
 {
   for(bool big : {false, true}) {
     const std::string file = write("m.ply", meshlab_ply(big));
@@ -391,7 +391,7 @@ TEST_F(LabelsPainted, MeshLabBinaryPlyFaceColours)
     EXPECT_EQ(p.source, Label_source::face_colors) << big;
     EXPECT_EQ(p.property, "red/green/blue");
     EXPECT_EQ(p.polygon_labels, (std::vector<int>{1, 0})) << big;
-    EXPECT_EQ(p.colors, (std::vector<Rgb>{{10, 200, 29}, {10, 200, 30}})) << big;
+    EXPECT_EQ(p.colors, (std::vector<Color>{{10, 200, 29}, {10, 200, 30}})) << big;
     Mesh mesh; // the mesh reader reads the same file
     EXPECT_EQ(diffuv::read_triangle_mesh(file, mesh).faces_in_file, 2u);
   }
@@ -439,7 +439,7 @@ std::string blender_ply(int format)
   return b.s + text.str();
 }
 
-TEST_F(LabelsPainted, BlenderPlyVertexColours)
+TEST_F(LabelsPainted, BlenderPlyVertexColors)
 {
   // Vertex labels by colour: blue (0,0,255) = 0, red = 1: 1 1 0 1 0.
   // Quad (1, 1, 0, 1) -> 1; triangle 1 4 2 (1, 0, 0) -> 0.
@@ -448,7 +448,7 @@ TEST_F(LabelsPainted, BlenderPlyVertexColours)
     EXPECT_EQ(p.source, Label_source::vertex_colors) << format;
     EXPECT_EQ(p.property, "red/green/blue");
     EXPECT_EQ(p.polygon_labels, (std::vector<int>{1, 0})) << format;
-    EXPECT_EQ(p.colors, (std::vector<Rgb>{{0, 0, 255}, {255, 0, 0}})) << format;
+    EXPECT_EQ(p.colors, (std::vector<Color>{{0, 0, 255}, {255, 0, 0}})) << format;
   }
 }
 
@@ -510,7 +510,7 @@ TEST_F(LabelsPainted, IntegerProperties)
   EXPECT_EQ(painted_error(f, "label").reason(), "the file has no face or vertex property \"label\"");
 }
 
-TEST_F(LabelsPainted, VertexPropertyBeforeVertexColours)
+TEST_F(LabelsPainted, VertexPropertyBeforeVertexColors)
 {
   const std::string values[4] = {"0 255 0 0", "0 255 0 0", "3 0 0 255", "3 0 0 255"}, none[2];
   const std::string properties = "int label\nproperty uint8 Red\nproperty uint8 green\nproperty uint8 blue";
@@ -530,8 +530,8 @@ TEST_F(LabelsPaintedErrors, Ply)
   EXPECT_EQ(e.line(), 16u);
   EXPECT_EQ(painted_error(write("b.ply", property_ply("", none, "uint segment", huge))).reason(),
             "face 1 has label 4294967295 (property \"segment\"), out of range");
-  const std::string colours[4] = {"255 0 0", "255 0 0", "0 0 1.5", "0 0 255"};
-  e = painted_error(write("c.ply", property_ply("float red\nproperty float green\nproperty float blue", colours, "",
+  const std::string colors[4] = {"255 0 0", "255 0 0", "0 0 1.5", "0 0 255"};
+  e = painted_error(write("c.ply", property_ply("float red\nproperty float green\nproperty float blue", colors, "",
                                                 none)));
   EXPECT_EQ(e.reason(), "vertex 0 has colour component 255, outside [0, 1]");
   EXPECT_EQ(e.line(), 13u);
@@ -681,19 +681,19 @@ TEST_F(LabelsPly, RoundTripOfARealMesh)
     for(vertex_descriptor v : vertices(mesh))
       wrong_points += points[i++] != mesh.point(v);
     EXPECT_EQ(wrong_points, 0u);
-    std::size_t j = 0, wrong_faces = 0, wrong_colours = 0;
+    std::size_t j = 0, wrong_faces = 0, wrong_colors = 0;
     for(face_descriptor f : faces(mesh)) {
       wrong_faces += polygons[j] != corners(mesh, f);
-      const Rgb expected = diffuv::label_color(labels[j]);
-      wrong_colours += Rgb{colors[j].r(), colors[j].g(), colors[j].b()} != expected;
+      const Color expected = diffuv::label_color(labels[j]);
+      wrong_colors += Color{colors[j].r(), colors[j].g(), colors[j].b()} != expected;
       ++j;
     }
     EXPECT_EQ(wrong_faces, 0u);
-    EXPECT_EQ(wrong_colours, 0u);
+    EXPECT_EQ(wrong_colors, 0u);
   }
 }
 
-TEST_F(LabelsPly, RepaintedOrSharedColoursAreReadAsColours)
+TEST_F(LabelsPly, RepaintedOrSharedColorsAreReadAsColors)
 {
   const Mesh grid = diffuv_test::make_grid(2, 2); // 8 triangles
   const std::vector<int> labels = {0, 0, 1, 1, 2, 2, 3, 3};
@@ -707,12 +707,12 @@ TEST_F(LabelsPly, RepaintedOrSharedColoursAreReadAsColours)
   for(std::string line; std::getline(in, line);)
     lines.push_back(line);
   in.close();
-  const Rgb c0 = diffuv::label_color(0);
+  const Color c0 = diffuv::label_color(0);
   std::istringstream last(lines.back()); // "3 i j k r g b label"
   std::string count, i, j, k;
   last >> count >> i >> j >> k;
-  lines.back() = count + " " + i + " " + j + " " + k + " " + std::to_string(c0[0]) + " " + std::to_string(c0[1]) +
-                 " " + std::to_string(c0[2]) + " 3";
+  lines.back() = count + " " + i + " " + j + " " + k + " " + std::to_string(c0.r) + " " + std::to_string(c0.g) +
+                 " " + std::to_string(c0.b) + " 3";
   std::string text;
   for(const std::string& line : lines)
     text += line + "\n";

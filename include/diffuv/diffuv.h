@@ -5,7 +5,7 @@
 // checks that this list is complete). Not included: render/, the optional
 // diffuv::render target (pictures and PNG files, through stb).
 //
-//   core/             the vocabulary: Status and the error types, the four sides, colours
+//   core/             the vocabulary: Status and the error types, the four sides, colours and the label palette
 //   io/               reading: meshes (OFF, OBJ, PLY, STL), labels, painted regions, corners, colours; safe output files
 //   graph/            multi-source Dijkstra (Fibonacci heap), fast marching, exact geodesics, edge lengths
 //   patches/          labels -> disc patches: segmentation, boundary loops, corners and four sides, flat triangles
@@ -19,6 +19,7 @@
 #ifndef DIFFUV_DIFFUV_H
 #define DIFFUV_DIFFUV_H
 
+#include <diffuv/core/color.h>
 #include <diffuv/core/error.h>
 #include <diffuv/core/four_sides.h>
 

@@ -13,6 +13,7 @@
 #ifndef DIFFUV_IO_LABELS_H
 #define DIFFUV_IO_LABELS_H
 
+#include <diffuv/core/color.h>
 #include <diffuv/core/error.h>
 #include <diffuv/io/atomic_file.h>
 #include <diffuv/internal/number_format.h>
@@ -44,9 +45,6 @@
 #include <vector>
 
 namespace diffuv {
-
-/// A colour: red, green, blue, 0-255.
-using Rgb = std::array<unsigned char, 3>;
 
 namespace internal {
 
@@ -132,33 +130,6 @@ inline void write_face_labels(const std::string& path, const std::vector<int>& l
   file.commit();
 }
 
-/// Returns the colour of `label` in diffuv's fixed palette: labels 0-19 get
-/// well-separated colours (matplotlib's tab10, then its light variants),
-/// larger labels a scrambled colour. Distinct labels below 2^24 get distinct
-/// colours, so the same label has the same colour on every mesh.
-inline Rgb label_color(int label)
-{
-  static constexpr std::uint32_t palette[20] = {
-    0x1f77b4, 0xff7f0e, 0x2ca02c, 0xd62728, 0x9467bd, 0x8c564b, 0xe377c2, 0x7f7f7f, 0xbcbd22, 0x17becf,
-    0xaec7e8, 0xffbb78, 0x98df8a, 0xff9896, 0xc5b0d5, 0xc49c94, 0xf7b6d2, 0xc7c7c7, 0xdbdb8d, 0x9edae5};
-  // An odd multiplier makes this a bijection of the 24-bit colours.
-  auto scramble = [](std::uint32_t k) { return (k * 0x9E3779u + 0x5BD1E9u) & 0xffffffu; };
-  std::uint32_t c;
-  if(label >= 0 && label < 20) {
-    c = palette[label];
-  } else {
-    // Cycle walking: a scrambled colour taken by the palette is replaced by
-    // the scrambled colour of that palette entry's label, which no other
-    // label uses; this keeps the map one-to-one.
-    c = scramble(static_cast<std::uint32_t>(label));
-    for(const std::uint32_t* p = std::find(palette, palette + 20, c); p != palette + 20;
-        p = std::find(palette, palette + 20, c))
-      c = scramble(static_cast<std::uint32_t>(p - palette));
-  }
-  return {static_cast<unsigned char>(c >> 16), static_cast<unsigned char>((c >> 8) & 0xff),
-          static_cast<unsigned char>(c & 0xff)};
-}
-
 /// Where painted regions were found in a mesh file.
 enum class Label_source { none, face_colors, face_property, vertex_colors, vertex_property };
 
@@ -173,7 +144,7 @@ struct Painted_labels {
   std::vector<int> polygon_labels;
   /// For colour sources, `colors[label]` is the colour of `label` (labels are
   /// 0 to `colors.size() - 1`); empty for the other sources
-  std::vector<Rgb> colors;
+  std::vector<Color> colors;
 };
 
 namespace internal {
@@ -227,10 +198,11 @@ inline bool parse_number(const std::string& token, double& value)
 
 /// The colours of `e`, checked: integers in [0,255], or floats in [0,1]
 /// scaled by 255 and rounded.
-inline std::vector<Rgb> colors_of(const std::string& path, const Paint_element& e)
+inline std::vector<Color> colors_of(const std::string& path, const Paint_element& e)
 {
-  std::vector<Rgb> colors(e.count);
-  for(std::size_t j = 0; j < e.count; ++j)
+  std::vector<Color> colors(e.count);
+  for(std::size_t j = 0; j < e.count; ++j) {
+    unsigned char rgb[3];
     for(int c = 0; c < 3; ++c) {
       const double v = e.color[j][c];
       const double top = e.float_color[c] ? 1. : 255.;
@@ -238,13 +210,15 @@ inline std::vector<Rgb> colors_of(const std::string& path, const Paint_element& 
         throw Input_error(path, e.line_of(j), e.kind + " " + std::to_string(j) + " has colour component " +
                                                   number_text(v) + ", outside " +
                                                   (e.float_color[c] ? "[0, 1]" : "[0, 255] (integers)"));
-      colors[j][c] = static_cast<unsigned char>(e.float_color[c] ? std::lround(v * 255) : v);
+      rgb[c] = static_cast<unsigned char>(e.float_color[c] ? std::lround(v * 255) : v);
     }
+    colors[j] = Color{rgb[0], rgb[1], rgb[2]};
+  }
   return colors;
 }
 
 /// Labels = ranks of the colours sorted by (r, g, b); `distinct` receives the sorted colours.
-inline std::vector<int> color_ranks(const std::vector<Rgb>& colors, std::vector<Rgb>& distinct)
+inline std::vector<int> color_ranks(const std::vector<Color>& colors, std::vector<Color>& distinct)
 {
   distinct = colors;
   std::sort(distinct.begin(), distinct.end());
@@ -816,7 +790,7 @@ struct Labelled_ply_options {
   /// `colors[label]`, the colour of each label; empty (default): `label_color()`.
   /// Give distinct labels distinct colours, or `read_painted_labels()` reads
   /// the colours back instead of the labels.
-  std::vector<Rgb> colors;
+  std::vector<Color> colors;
   /// Binary (little-endian) instead of text (default).
   bool binary = false;
 };
@@ -892,19 +866,19 @@ void write_labelled_ply(std::ostream& out, const TriangleMesh& tm, VertexPointMa
     if(corners.size() > 255)
       throw Output_error(path, "face " + std::to_string(j) + " has more than 255 vertices");
     const int label = face_labels[j++];
-    const Rgb rgb = options.colors.empty() ? label_color(label) : options.colors[static_cast<std::size_t>(label)];
+    const Color rgb = options.colors.empty() ? label_color(label) : options.colors[static_cast<std::size_t>(label)];
     if(options.binary) {
       put_bytes(corners.size(), 1);
       for(std::size_t c : corners)
         put_bytes(c, 4);
-      for(unsigned char c : rgb)
+      for(unsigned char c : {rgb.r, rgb.g, rgb.b})
         put_bytes(c, 1);
       put_bytes(static_cast<std::uint32_t>(label), 4);
     } else {
       out << corners.size();
       for(std::size_t c : corners)
         out << ' ' << c;
-      out << ' ' << int(rgb[0]) << ' ' << int(rgb[1]) << ' ' << int(rgb[2]) << ' ' << label << '\n';
+      out << ' ' << int(rgb.r) << ' ' << int(rgb.g) << ' ' << int(rgb.b) << ' ' << label << '\n';
     }
   }
 }

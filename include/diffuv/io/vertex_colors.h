@@ -3,6 +3,7 @@
 #ifndef DIFFUV_IO_VERTEX_COLORS_H
 #define DIFFUV_IO_VERTEX_COLORS_H
 
+#include <diffuv/core/color.h>
 #include <diffuv/io/atomic_file.h>
 #include <diffuv/io/labels.h>
 #include <diffuv/internal/number_format.h>
@@ -27,7 +28,7 @@ namespace diffuv {
 ///          binary OFF files)
 /// \throws Input_error naming `path`: "cannot open file", a malformed file, a
 ///         colour component out of range
-inline std::vector<Rgb> read_vertex_colors(const std::string& path)
+inline std::vector<Color> read_vertex_colors(const std::string& path)
 {
   const internal::Mesh_format format = internal::mesh_format(path);
   std::error_code ec;
@@ -49,7 +50,7 @@ inline std::vector<Rgb> read_vertex_colors(const std::string& path)
 /// \throws Output_error naming `path` if the counts differ (nothing is written then)
 template <class TriangleMesh, class VertexPointMap>
 void write_vertex_colored_ply(std::ostream& out, const TriangleMesh& tm, VertexPointMap vpm,
-                              const std::vector<Rgb>& colors, const std::string& path = "the PLY output")
+                              const std::vector<Color>& colors, const std::string& path = "the PLY output")
 {
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
   const std::size_t nv = static_cast<std::size_t>(num_vertices(tm));
@@ -72,8 +73,8 @@ void write_vertex_colored_ply(std::ostream& out, const TriangleMesh& tm, VertexP
     internal::write_shortest(out, CGAL::to_double(p.y()));
     out << ' ';
     internal::write_shortest(out, CGAL::to_double(p.z()));
-    const Rgb& c = colors[i++];
-    out << ' ' << int(c[0]) << ' ' << int(c[1]) << ' ' << int(c[2]) << '\n';
+    const Color& c = colors[i++];
+    out << ' ' << int(c.r) << ' ' << int(c.g) << ' ' << int(c.b) << '\n';
   }
   for(auto f : faces(tm)) {
     std::vector<std::size_t> corners;
