@@ -5,8 +5,10 @@
 
 #include <diffuv/core/color.h>
 #include <diffuv/io/atomic_file.h>
-#include <diffuv/io/labels.h>
+#include <diffuv/internal/message_text.h>
 #include <diffuv/internal/number_format.h>
+#include <diffuv/io/internal/read_paint.h>
+#include <diffuv/io/labels.h>
 
 #include <CGAL/Dynamic_property_map.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -30,14 +32,14 @@ namespace diffuv {
 ///         colour component out of range
 inline std::vector<Color> read_vertex_colors(const std::string& path)
 {
-  const internal::Mesh_format format = internal::mesh_format(path);
+  const Mesh_format format = mesh_format(path);
   std::error_code ec;
   const std::uintmax_t file_size = std::filesystem::file_size(path, ec);
   if(ec || std::filesystem::is_directory(path, ec) || !std::ifstream(path, std::ios::binary))
     throw Input_error(path, 0, "cannot open file");
   internal::Paint_file file;
-  if(format == internal::Mesh_format::ply) file = internal::read_ply_paint(path, std::string(), file_size);
-  else if(format == internal::Mesh_format::off) file = internal::read_off_paint(path);
+  if(format == Mesh_format::ply) file = internal::read_ply_paint(path, std::string(), file_size);
+  else if(format == Mesh_format::off) file = internal::read_off_paint(path);
   else return {};
   if(file.vertices.color_name.empty()) return {};
   return internal::colors_of(path, file.vertices);
