@@ -1,4 +1,5 @@
-// Tests of include/diffuv/io/labels.h: label files (every rejection with its
+// Tests of io/read_labels.h, io/painted_labels.h, output/write_labels.h and
+// output/write_ply.h: label files (every rejection with its
 // exact message and line), painted regions in OFF and PLY files (CGAL's
 // coloured meshes, MeshLab- and Blender-style headers, text and binary),
 // the per-vertex rule, labels carried to triangulated polygons, and the
@@ -8,8 +9,11 @@
 // CGAL's readers where they read the same thing.
 #include "test_data.h"
 
-#include <diffuv/io/labels.h>
+#include <diffuv/io/painted_labels.h>
+#include <diffuv/io/read_labels.h>
 #include <diffuv/io/read_mesh.h>
+#include <diffuv/output/write_labels.h>
+#include <diffuv/output/write_ply.h>
 
 #include <CGAL/IO/OFF.h>
 #include <CGAL/IO/PLY.h>

@@ -3,14 +3,16 @@
 #include "commands.h"
 #include "inputs.h"
 
-#include <diffuv/core/color.h>
 #include <diffuv/correspondence/correspondence.h>
 #include <diffuv/correspondence/labelled_atlas.h>
 #include <diffuv/correspondence/nearest_face_labels.h>
 #include <diffuv/correspondence/transfer.h>
+#include <diffuv/core/color.h>
 #include <diffuv/io/atomic_file.h>
 #include <diffuv/internal/number_format.h>
-#include <diffuv/io/vertex_colors.h>
+#include <diffuv/io/internal/number_tokens.h>
+#include <diffuv/io/read_vertex_colors.h>
+#include <diffuv/output/write_ply.h>
 
 #include <CGAL/Polygon_mesh_processing/bbox.h>
 

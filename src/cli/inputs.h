@@ -3,10 +3,11 @@
 #ifndef DIFFUV_CLI_INPUTS_H
 #define DIFFUV_CLI_INPUTS_H
 
-#include <diffuv/core/color.h>
 #include <diffuv/core/error.h>
 #include <diffuv/graph/distance_tags.h>
-#include <diffuv/io/labels.h>
+#include <diffuv/core/color.h>
+#include <diffuv/io/painted_labels.h>
+#include <diffuv/io/read_labels.h>
 #include <diffuv/io/read_mesh.h>
 #include <diffuv/parameterization/layout_judge.h>
 #include <diffuv/layout/disc_patches.h>

@@ -11,8 +11,8 @@
 #include "fuzz_input.h"
 
 #include <diffuv/core/error.h>
-#include <diffuv/io/labels.h>
-#include <diffuv/io/vertex_colors.h>
+#include <diffuv/io/painted_labels.h>
+#include <diffuv/io/read_vertex_colors.h>
 
 #include <cstddef>
 #include <cstdint>

@@ -1,125 +1,37 @@
-// diffuv: region labels, the paper's user-painted regions (one patch each).
-//
-// Labels come as a text file with one integer per polygon of the mesh file,
-// or painted in the mesh file itself: per-face colours (MeshLab), an integer
-// face property (PLY `label`, `quality`, ...), per-vertex labels or colours
-// (Blender, the paper's vertex painting). All of them are numbered per
-// polygon of the file, in file order; `face_labels_of_mesh()` carries them to
-// the triangles of the mesh built by `read_triangle_mesh()`.
+// diffuv: regions painted in the mesh file itself, the paper's user-painted
+// regions (one patch each): per-face colours (MeshLab), an integer face
+// property (PLY `label`, `quality`, ...), per-vertex labels or colours
+// (Blender, the paper's vertex painting). They are numbered per polygon of
+// the file, in file order; `face_labels_of_mesh()` (read_labels.h) carries
+// them to the triangles of the mesh built by `read_triangle_mesh()`.
 //
 // Colours become labels canonically: the distinct colours of the file are
 // sorted by (red, green, blue) and a colour's label is its rank. The same
 // painting on two meshes gives the same labels, whatever the face order.
-#ifndef DIFFUV_IO_LABELS_H
-#define DIFFUV_IO_LABELS_H
+#ifndef DIFFUV_IO_PAINTED_LABELS_H
+#define DIFFUV_IO_PAINTED_LABELS_H
 
 #include <diffuv/core/color.h>
 #include <diffuv/core/error.h>
-#include <diffuv/io/atomic_file.h>
 #include <diffuv/internal/message_text.h>
-#include <diffuv/internal/number_format.h>
 #include <diffuv/io/internal/mesh_scan.h>
 #include <diffuv/io/internal/read_paint.h>
 #include <diffuv/io/read_mesh.h>
 
-#include <CGAL/Dynamic_property_map.h>
-#include <CGAL/boost/graph/iterator.h>
-#include <CGAL/number_utils.h>
-
-#include <boost/graph/graph_traits.hpp>
-#include <boost/property_map/property_map.hpp>
-
 #include <algorithm>
-#include <array>
-#include <cctype>
-#include <charconv>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
-#include <cstdlib>
-#include <cstring>
+#include <filesystem>
 #include <fstream>
-#include <iomanip>
-#include <limits>
 #include <map>
-#include <sstream>
 #include <string>
+#include <system_error>
 #include <type_traits>
 #include <utility>
 #include <vector>
 
 namespace diffuv {
-
-namespace internal {
-
-/// The label written as `token`; throws the reason of a bad one.
-inline int parse_label(const std::string& token, const std::string& path, std::size_t line)
-{
-  long long value = 0;
-  const auto [end, ec] = std::from_chars(token.data(), token.data() + token.size(), value);
-  if(ec == std::errc::result_out_of_range && end == token.data() + token.size())
-    throw Input_error(path, line, "label " + token + " is out of range");
-  if(ec != std::errc() || end != token.data() + token.size())
-    throw Input_error(path, line, "\"" + printable(token) + "\" is not an integer label");
-  if(value < std::numeric_limits<int>::min() || value > std::numeric_limits<int>::max())
-    throw Input_error(path, line, "label " + token + " is out of range");
-  if(value < 0)
-    throw Input_error(path, line, "label " + token + " is negative; labels are non-negative integers");
-  return static_cast<int>(value);
-}
-
-} // namespace internal
-
-/// Reads a per-face label file: integers separated by white space, one per
-/// polygon of the mesh file in file order (one per line is the documented
-/// form); `#` starts a comment that runs to the end of the line.
-/// \param expected_polygons the number of polygons of the mesh file
-///        (`Mesh_read_report::faces_in_file`)
-/// \returns `expected_polygons` labels, each in [0, 2^31)
-/// \throws Input_error naming `path`, with the line of the label concerned
-///   (0 for the first two): "cannot open file";
-///   "the file has 5000 labels, the mesh has 5804 faces";
-///   "\"abc\" is not an integer label"; "label 2147483648 is out of range";
-///   "label -3 is negative; labels are non-negative integers"
-inline std::vector<int> read_face_labels(const std::string& path, std::size_t expected_polygons)
-{
-  std::error_code ec;
-  std::ifstream in(path, std::ios::binary);
-  if(std::filesystem::is_directory(path, ec) || !in)
-    throw Input_error(path, 0, "cannot open file");
-  std::vector<int> labels;
-  std::string line;
-  for(std::size_t number = 1; std::getline(in, line); ++number) {
-    if(number == 1) internal::drop_byte_order_mark(line);
-    const std::size_t hash = line.find('#');
-    if(hash != std::string::npos)
-      line.erase(hash);
-    std::istringstream tokens(line); // white space includes the '\r' of CRLF files
-    std::string token;
-    while(tokens >> token)
-      labels.push_back(internal::parse_label(token, path, number));
-  }
-  if(labels.size() != expected_polygons)
-    throw Input_error(path, 0, "the file has " + internal::count_text(labels.size(), "label") + ", the mesh has " +
-                                   internal::count_text(expected_polygons, "face"));
-  return labels;
-}
-
-/// Writes labels one per line, readable by `read_face_labels()`, through
-/// `Atomic_output_file`.
-/// \throws Output_error naming `path` if the file cannot be written, or if a
-///         label is negative ("face 3 has label -1; labels are non-negative
-///         integers"); nothing is written then
-inline void write_face_labels(const std::string& path, const std::vector<int>& labels)
-{
-  for(std::size_t j = 0; j < labels.size(); ++j)
-    if(labels[j] < 0)
-      throw Output_error(path, "face " + std::to_string(j) + " has label " + std::to_string(labels[j]) +
-                                   "; labels are non-negative integers");
-  Atomic_output_file file(path);
-  for(int label : labels)
-    file.stream() << label << '\n';
-  file.commit();
-}
 
 /// Where painted regions were found in a mesh file.
 enum class Label_source { none, face_colors, face_property, vertex_colors, vertex_property };
@@ -344,139 +256,6 @@ inline Painted_labels read_painted_labels(const std::string& path, const std::st
   return result;
 }
 
-/// Carries per-polygon labels of a mesh file to the faces of the mesh built
-/// by `read_triangle_mesh()`: a triangle cut from a polygon takes its label.
-/// \param polygon_labels one label per polygon of the file, in file order
-/// \param report the reader's report for that file
-/// \returns `report.faces` labels, in the order of `faces(mesh)`
-/// \throws Error if `polygon_labels` does not have `report.faces_in_file`
-///         entries or the report has no face provenance
-inline std::vector<int> face_labels_of_mesh(const std::vector<int>& polygon_labels, const Mesh_read_report& report)
-{
-  if(polygon_labels.size() != report.faces_in_file)
-    throw Error("there are " + internal::count_text(polygon_labels.size(), "polygon label") +
-                ", the mesh file has " + internal::count_text(report.faces_in_file, "face"));
-  if(report.file_face.size() != report.faces)
-    throw Error("the mesh read report has no face provenance (file_face)");
-  std::vector<int> labels(report.faces);
-  for(std::size_t f = 0; f < report.faces; ++f) {
-    if(report.file_face[f] >= polygon_labels.size())
-      throw Error("the mesh read report maps face " + std::to_string(f) + " to polygon " +
-                  std::to_string(report.file_face[f]) + ", which does not exist");
-    labels[f] = polygon_labels[report.file_face[f]];
-  }
-  return labels;
-}
-
-/// Options of `write_labelled_ply()`.
-struct Labelled_ply_options {
-  /// `colors[label]`, the colour of each label; empty (default): `label_color()`.
-  /// Give distinct labels distinct colours, or `read_painted_labels()` reads
-  /// the colours back instead of the labels.
-  std::vector<Color> colors;
-  /// Binary (little-endian) instead of text (default).
-  bool binary = false;
-};
-
-/// Writes a PLY mesh whose faces carry their region: per-face colours
-/// `red`/`green`/`blue` (uchar), which MeshLab and Blender show, and an int
-/// property `label`, which `read_painted_labels()` reads back. Vertices are
-/// written in the order of `vertices(tm)` (double coordinates), faces in the
-/// order of `faces(tm)`, to `out` (`path` names it in errors).
-/// \tparam TriangleMesh a model of `FaceListGraph` and `VertexListGraph`
-/// \tparam VertexPointMap a readable property map from vertices to points with `x()`, `y()`, `z()`
-/// \param face_labels one non-negative label per face, in the order of `faces(tm)`
-/// \throws Output_error naming `path` if the file cannot be written, or
-///   (nothing is written) "5 face labels for a mesh of 6 faces", "face 3 has
-///   label -1; labels are non-negative integers", "face 3 has label 7, but
-///   only 4 colours are given"
-template <class TriangleMesh, class VertexPointMap>
-void write_labelled_ply(std::ostream& out, const TriangleMesh& tm, VertexPointMap vpm,
-                        const std::vector<int>& face_labels, const Labelled_ply_options& options = {},
-                        const std::string& path = "the PLY output")
-{
-  using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
-  using Key = typename boost::property_traits<VertexPointMap>::key_type;
-  static_assert(std::is_convertible<vertex_descriptor, Key>::value,
-                "write_labelled_ply: VertexPointMap must map the mesh's vertex_descriptor to a point");
-  const std::size_t nf = static_cast<std::size_t>(num_faces(tm));
-  if(face_labels.size() != nf)
-    throw Output_error(path, internal::count_text(face_labels.size(), "face label") + " for a mesh of " +
-                                 internal::count_text(nf, "face"));
-  for(std::size_t j = 0; j < nf; ++j) {
-    const std::string which = "face " + std::to_string(j) + " has label " + std::to_string(face_labels[j]);
-    if(face_labels[j] < 0)
-      throw Output_error(path, which + "; labels are non-negative integers");
-    if(!options.colors.empty() && static_cast<std::size_t>(face_labels[j]) >= options.colors.size())
-      throw Output_error(path, which + ", but only " + internal::count_text(options.colors.size(), "colour") +
-                                   " are given");
-  }
-
-  auto number = get(CGAL::dynamic_vertex_property_t<std::size_t>(), tm);
-  std::size_t nv = 0;
-  for(vertex_descriptor v : vertices(tm))
-    put(number, v, nv++);
-
-  out << "ply\nformat " << (options.binary ? "binary_little_endian" : "ascii") << " 1.0\n"
-      << "comment diffuv labelled regions: face colour = region, face label = region number\n"
-      << "element vertex " << nv << "\nproperty double x\nproperty double y\nproperty double z\n"
-      << "element face " << nf << "\nproperty list uchar int vertex_indices\n"
-      << "property uchar red\nproperty uchar green\nproperty uchar blue\nproperty int label\nend_header\n";
-  auto put_bytes = [&](std::uint64_t bits, int n) { // little-endian, whatever the host
-    for(int i = 0; i < n; ++i)
-      out.put(static_cast<char>((bits >> (8 * i)) & 0xff));
-  };
-  for(vertex_descriptor v : vertices(tm)) {
-    const auto& p = get(vpm, v);
-    const double xyz[3] = {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
-    for(int c = 0; c < 3; ++c) {
-      if(options.binary) {
-        std::uint64_t bits;
-        std::memcpy(&bits, &xyz[c], 8);
-        put_bytes(bits, 8);
-      } else {
-        internal::write_shortest(out, xyz[c]);
-        out << (c < 2 ? ' ' : '\n');
-      }
-    }
-  }
-  std::size_t j = 0;
-  std::vector<std::size_t> corners;
-  for(auto f : faces(tm)) {
-    corners.clear();
-    for(vertex_descriptor v : CGAL::vertices_around_face(halfedge(f, tm), tm))
-      corners.push_back(get(number, v));
-    if(corners.size() > 255)
-      throw Output_error(path, "face " + std::to_string(j) + " has more than 255 vertices");
-    const int label = face_labels[j++];
-    const Color rgb = options.colors.empty() ? label_color(label) : options.colors[static_cast<std::size_t>(label)];
-    if(options.binary) {
-      put_bytes(corners.size(), 1);
-      for(std::size_t c : corners)
-        put_bytes(c, 4);
-      for(unsigned char c : {rgb.r, rgb.g, rgb.b})
-        put_bytes(c, 1);
-      put_bytes(static_cast<std::uint32_t>(label), 4);
-    } else {
-      out << corners.size();
-      for(std::size_t c : corners)
-        out << ' ' << c;
-      out << ' ' << int(rgb.r) << ' ' << int(rgb.g) << ' ' << int(rgb.b) << ' ' << label << '\n';
-    }
-  }
-}
-
-/// Same as above, into the file `path` through `Atomic_output_file`.
-/// \throws Output_error naming `path`
-template <class TriangleMesh, class VertexPointMap>
-void write_labelled_ply(const std::string& path, const TriangleMesh& tm, VertexPointMap vpm,
-                        const std::vector<int>& face_labels, const Labelled_ply_options& options = {})
-{
-  Atomic_output_file file(path);
-  write_labelled_ply(file.stream(), tm, vpm, face_labels, options, path);
-  file.commit();
-}
-
 } // namespace diffuv
 
-#endif // DIFFUV_IO_LABELS_H
+#endif // DIFFUV_IO_PAINTED_LABELS_H
