@@ -158,16 +158,17 @@ inline File_soup parse_off(const std::string& file)
   return soup;
 }
 
-/// CGAL's PLY reader with face colours. A pitfall: CGAL 5.5 compiles it only
-/// when vertex colours are asked for too, into the same iterator type.
+/// CGAL's PLY reader with face colours, and vertex colours if asked for. A
+/// pitfall: CGAL 5.5 compiles it only when both are asked for, into the same
+/// iterator type.
 inline bool cgal_read_ply(const std::string& file, std::vector<Point_3>& points,
                           std::vector<std::vector<std::size_t>>& polygons, std::vector<CGAL::IO::Color>& face_colors,
-                          bool binary = true)
+                          bool binary = true, std::vector<CGAL::IO::Color>* vertex_colors = nullptr)
 {
-  std::vector<CGAL::IO::Color> vertex_colors;
+  std::vector<CGAL::IO::Color> ignored;
   return CGAL::IO::read_PLY(file, points, polygons,
                             CGAL::parameters::face_color_output_iterator(std::back_inserter(face_colors))
-                              .vertex_color_output_iterator(std::back_inserter(vertex_colors))
+                              .vertex_color_output_iterator(std::back_inserter(vertex_colors ? *vertex_colors : ignored))
                               .use_binary_mode(binary)
                               .verbose(false));
 }

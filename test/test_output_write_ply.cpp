@@ -1,11 +1,13 @@
 // Tests of include/diffuv/output/write_ply.h: labelled PLY files (text and
 // binary) read back by read_painted_labels() and by CGAL's reader, repainted
-// or shared colours, errors that write nothing.
+// or shared colours, errors that write nothing; vertex-coloured PLY files
+// read back by read_vertex_colors() and by CGAL's reader.
 #include "test_data.h"
 
 #include <diffuv/core/color.h>
 #include <diffuv/io/painted_labels.h>
 #include <diffuv/io/read_mesh.h>
+#include <diffuv/io/read_vertex_colors.h>
 #include <diffuv/output/write_ply.h>
 
 #include <gtest/gtest.h>
@@ -28,6 +30,7 @@ using vertex_descriptor = boost::graph_traits<Mesh>::vertex_descriptor;
 using Polygons = std::vector<std::vector<std::size_t>>;
 
 using LabelsPly = diffuv_test::Temp_dir_test;
+using VertexColoredPly = diffuv_test::Temp_dir_test;
 
 // ---------------------------------------------------------------------------
 // Labelled PLY: write, then read back
@@ -131,6 +134,48 @@ TEST_F(LabelsPly, WriteErrorsWriteNothing)
             file + ": face 6 has label 3, but only 3 colours are given");
   EXPECT_FALSE(fs::exists(file));
   EXPECT_TRUE(fs::is_empty(dir_));
+}
+
+// ---------------------------------------------------------------------------
+// Vertex-coloured PLY: write, then read back
+
+TEST_F(VertexColoredPly, RoundTrip)
+{
+  const Mesh grid = diffuv_test::make_grid(2, 1); // 6 vertices, 4 triangles
+  std::vector<Color> colors;
+  for(unsigned char i = 0; i < 6; ++i)
+    colors.push_back(Color{static_cast<unsigned char>(50 * i), 255, static_cast<unsigned char>(7 - i)});
+  const std::string file = path("v.ply");
+  {
+    std::ofstream out(file);
+    diffuv::write_vertex_colored_ply(out, grid, get(CGAL::vertex_point, grid), colors, file);
+  }
+  EXPECT_EQ(diffuv::read_vertex_colors(file), colors);
+
+  // CGAL's reader: the same points in the same order, the same faces and colours.
+  std::vector<Point_3> points;
+  Polygons polygons;
+  std::vector<CGAL::IO::Color> face_colors, vertex_colors;
+  ASSERT_TRUE(diffuv_test::cgal_read_ply(file, points, polygons, face_colors, false, &vertex_colors));
+  ASSERT_EQ(points.size(), 6u);
+  ASSERT_EQ(vertex_colors.size(), 6u);
+  std::size_t i = 0;
+  for(vertex_descriptor v : vertices(grid)) {
+    EXPECT_EQ(points[i], grid.point(v)) << i;
+    EXPECT_EQ((Color{vertex_colors[i].r(), vertex_colors[i].g(), vertex_colors[i].b()}), colors[i]) << i;
+    ++i;
+  }
+  std::size_t j = 0;
+  for(face_descriptor f : faces(grid))
+    EXPECT_EQ(polygons[j++], diffuv_test::face_vertex_numbers(grid, f));
+
+  // A colour per vertex, or nothing is written.
+  std::ostringstream out;
+  colors.pop_back();
+  EXPECT_EQ(diffuv_test::error_text<diffuv::Output_error>(
+              [&] { diffuv::write_vertex_colored_ply(out, grid, get(CGAL::vertex_point, grid), colors, file); }),
+            file + ": 5 vertex colours for a mesh of 6 vertices");
+  EXPECT_TRUE(out.str().empty());
 }
 
 } // namespace
