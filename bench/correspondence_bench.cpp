@@ -1200,7 +1200,7 @@ int run(const Options& o)
                 << " unmapped: " << r.verdict << "\n";
       diffuv_bench::Plot_series series;
       series.name = pair;
-      series.colour = diffuv_bench::series_colour(plot.series.size());
+      series.color = diffuv_bench::series_color(plot.series.size());
       for(double x : radii) series.points.emplace_back(x, percent_within(r.error, x));
       plot.series.push_back(std::move(series));
     }

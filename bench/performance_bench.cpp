@@ -1261,7 +1261,7 @@ void write_plots(const std::vector<Row>& rows, const std::vector<std::string>& n
     for(const auto& [name, key] : curves) {
       diffuv_bench::Plot_series s;
       s.name = name;
-      s.colour = diffuv_bench::series_colour(plot.series.size());
+      s.color = diffuv_bench::series_color(plot.series.size());
       s.points = series_of(mesh, key, true);
       if(!s.points.empty()) plot.series.push_back(std::move(s));
     }
@@ -1281,7 +1281,7 @@ void write_plots(const std::vector<Row>& rows, const std::vector<std::string>& n
                                      std::pair<const char*, const char*>{"default", "default_ns_ElogV"}}) {
         diffuv_bench::Plot_series s;
         s.name = mesh + " " + what;
-        s.colour = diffuv_bench::series_colour(plot.series.size());
+        s.color = diffuv_bench::series_color(plot.series.size());
         s.points = series_of(mesh, key, false);
         if(!s.points.empty()) plot.series.push_back(std::move(s));
       }
@@ -1308,7 +1308,7 @@ void write_plots(const std::vector<Row>& rows, const std::vector<std::string>& n
     for(const auto& [name, key] : heaps) {
       diffuv_bench::Plot_series s;
       s.name = name;
-      s.colour = diffuv_bench::series_colour(plot.series.size());
+      s.color = diffuv_bench::series_color(plot.series.size());
       for(const Row& r : rows) {
         const double v = r.number("V"), e = r.number("E"), t = r.number(key);
         if(std::isnan(v) || std::isnan(t)) continue;

@@ -7,6 +7,7 @@
 #ifndef DIFFUV_BENCH_PLOT_PNG_H
 #define DIFFUV_BENCH_PLOT_PNG_H
 
+#include <diffuv/core/color.h>
 #include <diffuv/render/texture.h>
 
 #include <algorithm>
@@ -21,12 +22,12 @@
 
 namespace diffuv_bench {
 
-using Rgb = std::array<unsigned char, 3>;
+using diffuv::Color;
 
 /// One curve: a name for the legend, a colour, points in data units.
 struct Plot_series {
   std::string name;
-  Rgb colour{{0, 0, 0}};
+  Color color{0, 0, 0};
   std::vector<std::pair<double, double>> points;  ///< (x, y), drawn in this order
 };
 
@@ -42,11 +43,11 @@ struct Line_plot {
 };
 
 /// A colour for series `i`: ten distinguishable colours, then again.
-inline Rgb series_colour(std::size_t i)
+inline Color series_color(std::size_t i)
 {
-  static const Rgb palette[] = {{{31, 119, 180}}, {{255, 127, 14}}, {{44, 160, 44}}, {{214, 39, 40}},
-                                {{148, 103, 189}}, {{140, 86, 75}}, {{227, 119, 194}}, {{127, 127, 127}},
-                                {{188, 189, 34}}, {{23, 190, 207}}};
+  static const Color palette[] = {{31, 119, 180}, {255, 127, 14}, {44, 160, 44}, {214, 39, 40},
+                                  {148, 103, 189}, {140, 86, 75}, {227, 119, 194}, {127, 127, 127},
+                                  {188, 189, 34}, {23, 190, 207}};
   return palette[i % 10];
 }
 
@@ -141,39 +142,43 @@ inline std::array<std::uint8_t, 9> glyph(char c)
 // An RGB image with clipping and alpha blending.
 class Canvas {
 public:
-  Canvas(int width, int height, Rgb background)
+  Canvas(int width, int height, Color background)
     : width_(width), height_(height), rgb_(static_cast<std::size_t>(width) * height * 3)
   {
-    for(std::size_t i = 0; i < rgb_.size(); i += 3)
-      for(int k = 0; k < 3; ++k) rgb_[i + k] = background[k];
+    for(std::size_t i = 0; i < rgb_.size(); i += 3) {
+      rgb_[i] = background.r;
+      rgb_[i + 1] = background.g;
+      rgb_[i + 2] = background.b;
+    }
   }
 
   const std::vector<unsigned char>& rgb() const { return rgb_; }
 
-  void blend(int x, int y, Rgb c, double alpha)
+  void blend(int x, int y, Color c, double alpha)
   {
     if(x < 0 || y < 0 || x >= width_ || y >= height_ || alpha <= 0.) return;
     if(x < clip_[0] || y < clip_[1] || x > clip_[2] || y > clip_[3]) return;
     alpha = std::min(alpha, 1.);
     unsigned char* p = &rgb_[(static_cast<std::size_t>(y) * width_ + x) * 3];
-    for(int k = 0; k < 3; ++k) p[k] = static_cast<unsigned char>(std::lround(p[k] * (1. - alpha) + c[k] * alpha));
+    const unsigned char rgb[3] = {c.r, c.g, c.b};
+    for(int k = 0; k < 3; ++k) p[k] = static_cast<unsigned char>(std::lround(p[k] * (1. - alpha) + rgb[k] * alpha));
   }
 
   void set_clip(int x0, int y0, int x1, int y1) { clip_ = {{x0, y0, x1, y1}}; }
   void reset_clip() { clip_ = {{0, 0, width_ - 1, height_ - 1}}; }
 
-  void fill_rect(int x0, int y0, int x1, int y1, Rgb c)
+  void fill_rect(int x0, int y0, int x1, int y1, Color c)
   {
     for(int y = y0; y <= y1; ++y)
       for(int x = x0; x <= x1; ++x) blend(x, y, c, 1.);
   }
 
-  void hline(int x0, int x1, int y, Rgb c) { fill_rect(std::min(x0, x1), y, std::max(x0, x1), y, c); }
-  void vline(int x, int y0, int y1, Rgb c) { fill_rect(x, std::min(y0, y1), x, std::max(y0, y1), c); }
+  void hline(int x0, int x1, int y, Color c) { fill_rect(std::min(x0, x1), y, std::max(x0, x1), y, c); }
+  void vline(int x, int y0, int y1, Color c) { fill_rect(x, std::min(y0, y1), x, std::max(y0, y1), c); }
 
   // An anti-aliased segment of width `w` pixels: coverage from the distance
   // of each pixel centre to the segment.
-  void segment(double x0, double y0, double x1, double y1, double w, Rgb c)
+  void segment(double x0, double y0, double x1, double y1, double w, Color c)
   {
     const double r = 0.5 * w;
     const int xa = static_cast<int>(std::floor(std::min(x0, x1) - r - 1));
@@ -193,7 +198,7 @@ public:
   }
 
   // Text with its top-left corner at (x, y), each font pixel `scale` x `scale`.
-  void text(int x, int y, const std::string& s, int scale, Rgb c)
+  void text(int x, int y, const std::string& s, int scale, Color c)
   {
     for(char ch : s) {
       const auto g = glyph(ch);
@@ -207,7 +212,7 @@ public:
 
   // Text turned a quarter anticlockwise (reads bottom to top), its glyphs'
   // top-left corner at (x, y) being the lower left of the string.
-  void text_vertical(int x, int y, const std::string& s, int scale, Rgb c)
+  void text_vertical(int x, int y, const std::string& s, int scale, Color c)
   {
     for(char ch : s) {
       const auto g = glyph(ch);
@@ -233,7 +238,7 @@ private:
   // Blending that keeps the strongest coverage a pixel got within one stroke,
   // so the joints of a polyline are not blended twice: only the part of the
   // coverage not yet applied is added ((a - a0) / (1 - a0) of the way).
-  void blend_max(int x, int y, Rgb c, double alpha)
+  void blend_max(int x, int y, Color c, double alpha)
   {
     if(x < 0 || y < 0 || x >= width_ || y >= height_) return;
     if(x < clip_[0] || y < clip_[1] || x > clip_[2] || y > clip_[3]) return;
@@ -284,7 +289,7 @@ inline std::string tick_text(double value, double step)
 inline std::vector<unsigned char> render_plot(const Line_plot& plot)
 {
   using internal::Canvas;
-  const Rgb white{{255, 255, 255}}, black{{0, 0, 0}}, grid{{225, 225, 225}}, grey{{90, 90, 90}};
+  const Color white{255, 255, 255}, black{0, 0, 0}, grid{225, 225, 225}, grey{90, 90, 90};
   Canvas canvas(plot.width, plot.height, white);
   const int scale = 1;
   const int left = 62, right = plot.width - 18, top = plot.title.empty() ? 16 : 34, bottom = plot.height - 44;
@@ -329,7 +334,7 @@ inline std::vector<unsigned char> render_plot(const Line_plot& plot)
     canvas.begin_stroke();
     for(std::size_t i = 1; i < s.points.size(); ++i)
       canvas.segment(px(s.points[i - 1].first), py(s.points[i - 1].second), px(s.points[i].first),
-                     py(s.points[i].second), 2., s.colour);
+                     py(s.points[i].second), 2., s.color);
   }
   canvas.reset_clip();
 
@@ -350,7 +355,7 @@ inline std::vector<unsigned char> render_plot(const Line_plot& plot)
     for(std::size_t i = 0; i < plot.series.size(); ++i) {
       const int y = y0 + 6 + line_height * static_cast<int>(i);
       canvas.begin_stroke();
-      canvas.segment(x0 + 8, y + 4, x0 + 8 + sample, y + 4, 2., plot.series[i].colour);
+      canvas.segment(x0 + 8, y + 4, x0 + 8 + sample, y + 4, 2., plot.series[i].color);
       canvas.text(x0 + 8 + sample + 6, y, plot.series[i].name, scale, black);
     }
   }

@@ -3,7 +3,7 @@
 // per patch.
 //
 // Usage: segmented_mesh [mesh.off [labels.txt]]   (default: CGAL's cow.off, automatic patches)
-#include <diffuv/io/labels.h>
+#include <diffuv/io/read_labels.h>
 #include <diffuv/io/read_mesh.h>
 #include <diffuv/parameterization/parameterize_patches.h>
 #include <diffuv/layout/disc_patches.h>

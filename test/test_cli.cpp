@@ -2,7 +2,7 @@
 // errors, and that a failure writes nothing.
 #include "test_data.h"
 
-#include <diffuv/io/labels.h>
+#include <diffuv/core/color.h>
 
 #include <gtest/gtest.h>
 
@@ -620,7 +620,7 @@ TEST_F(Correspond, ShuffledMovedCopyMapsEveryVertexOntoItsCopy)
 
 // B's vertex colours land on A's vertices (each maps onto its copy), and
 // --values rows are interpolated the same way.
-TEST_F(Correspond, ColoursAndValuesAreCarriedToA)
+TEST_F(Correspond, ColorsAndValuesAreCarriedToA)
 {
   const std::string b = write_b(true, "b_colored.off");
   const std::string labels_b = write_labels(b_labels_, "b.labels.txt");
@@ -734,7 +734,7 @@ TEST_F(Correspond, LabelsInOneMeshOnlyAreReported)
 // Regions painted on both meshes: A as `diffuv segment` writes it (palette
 // colours and a label property), B painted with the same colours only (another
 // file, another numbering): the colours name the same regions.
-TEST_F(Correspond, PaintedRegionsPairByColour)
+TEST_F(Correspond, PaintedRegionsPairByColor)
 {
   std::ostringstream b;
   b.precision(17);
@@ -742,8 +742,8 @@ TEST_F(Correspond, PaintedRegionsPairByColour)
   for(std::size_t k = 0; k < nv_; ++k) b << b_points_[k][0] << ' ' << b_points_[k][1] << ' ' << b_points_[k][2] << '\n';
   for(std::size_t k = 0; k < b_faces_.size(); ++k) {
     const auto c = diffuv::label_color(b_labels_[k]);
-    b << "3 " << b_faces_[k][0] << ' ' << b_faces_[k][1] << ' ' << b_faces_[k][2] << ' ' << int(c[0]) << ' '
-      << int(c[1]) << ' ' << int(c[2]) << '\n';
+    b << "3 " << b_faces_[k][0] << ' ' << b_faces_[k][1] << ' ' << b_faces_[k][2] << ' ' << int(c.r) << ' '
+      << int(c.g) << ' ' << int(c.b) << '\n';
   }
   const std::string painted_b = write("b_painted.off", b.str());
   const Tool_run r = run("correspond " + path("seg") + "/a.patches.ply " + painted_b + " -o " + out_dir().string());

@@ -342,22 +342,22 @@ TEST(Correspondence, TransferInterpolatesBarycentrically)
   const auto images = c.map_vertices();
 
   std::vector<double> x_of(num_vertices(b.mesh));
-  std::vector<std::array<unsigned char, 3>> color_of(num_vertices(b.mesh));
+  std::vector<diffuv::Color> color_of(num_vertices(b.mesh));
   for(auto v : vertices(b.mesh)) {
     x_of[v.idx()] = b.mesh.point(v).x();
-    color_of[v.idx()] = {{static_cast<unsigned char>(v.idx() % 256), 200, 7}};
+    color_of[v.idx()] = {static_cast<unsigned char>(v.idx() % 256), 200, 7};
   }
   const auto vindex = get(boost::vertex_index, b.mesh);
   const auto xs = diffuv::transfer_vertex_values(b.mesh, images, boost::make_iterator_property_map(x_of.begin(), vindex), -1.);
   const auto points = diffuv::transfer_vertex_values(b.mesh, images, b.mesh.points(), Point_3(0, 0, 0));
   const auto colors = diffuv::transfer_vertex_values(b.mesh, images, boost::make_iterator_property_map(color_of.begin(), vindex),
-                                                     std::array<unsigned char, 3>{{0, 0, 0}});
+                                                     diffuv::Color{0, 0, 0});
   for(auto v : vertices(a)) {
     EXPECT_NEAR(xs[v.idx()], images[v.idx()].point.x(), 1e-9 * b.scale);
     EXPECT_LT(std::sqrt(CGAL::squared_distance(points[v.idx()], images[v.idx()].point)), 1e-9 * b.scale);
     // A vertex mapped onto a vertex of B takes its colour exactly.
     EXPECT_EQ(colors[v.idx()], color_of[b.vertex_of[v.idx()].idx()]);
-    EXPECT_EQ(colors[v.idx()][1], 200);
+    EXPECT_EQ(colors[v.idx()].g, 200);
   }
   // A point halfway along an edge of B: colour channels averaged and rounded.
   const face_descriptor f = *faces(b.mesh).begin();
@@ -365,13 +365,18 @@ TEST(Correspondence, TransferInterpolatesBarycentrically)
   mid.face = f;
   mid.chart = 0;
   mid.barycentric = {{0.5, 0.5, 0.}};
-  std::vector<std::array<unsigned char, 3>> two(num_vertices(b.mesh), {{0, 0, 0}});
+  std::vector<diffuv::Color> two(num_vertices(b.mesh));
   const auto h = b.mesh.halfedge(f);
-  two[b.mesh.source(h).idx()] = {{10, 255, 0}};
-  two[b.mesh.target(h).idx()] = {{11, 0, 0}};
+  two[b.mesh.source(h).idx()] = {10, 255, 0};
+  two[b.mesh.target(h).idx()] = {11, 0, 0};
   const auto mixed = diffuv::interpolate_at(b.mesh, mid, boost::make_iterator_property_map(two.begin(), vindex));
-  EXPECT_EQ(mixed[0], 11);  // 10.5 rounds away from zero
-  EXPECT_EQ(mixed[1], 128); // 127.5
+  EXPECT_EQ(mixed, (diffuv::Color{11, 128, 0})); // 10.5 and 127.5 round away from zero
+  // Arrays of bytes mix the same way, entry by entry.
+  std::vector<std::array<unsigned char, 3>> bytes(num_vertices(b.mesh), {{0, 0, 0}});
+  bytes[b.mesh.source(h).idx()] = {{10, 255, 0}};
+  bytes[b.mesh.target(h).idx()] = {{11, 0, 0}};
+  EXPECT_EQ(diffuv::interpolate_at(b.mesh, mid, boost::make_iterator_property_map(bytes.begin(), vindex)),
+            (std::array<unsigned char, 3>{{11, 128, 0}}));
 }
 
 // Labels given to a copy by nearest face are the original labels.

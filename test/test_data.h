@@ -1,19 +1,30 @@
-// Shared helpers of the tests: where CGAL's data set was extracted, and a
-// cache that loads each real mesh once for the whole test run.
+// Shared helpers of the tests: where CGAL's data set was extracted, a
+// cache that loads each real mesh once for the whole test run, flat grids,
+// files read by hand (independent of the readers under test), and the
+// errors that a call must throw.
 #ifndef DIFFUV_TEST_DATA_H
 #define DIFFUV_TEST_DATA_H
 
+#include <diffuv/core/error.h>
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/IO/Color.h>
+#include <CGAL/IO/PLY.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/boost/graph/iterator.h>
 
 #include <gtest/gtest.h>
 
 #include <unistd.h>
 
+#include <algorithm>
+#include <array>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <map>
+#include <sstream>
 #include <vector>
 #include <string>
 
@@ -87,6 +98,114 @@ double signed_uv_area(const Mesh& m, Mesh::Face_index f, UvOf uv_of)
   auto h = m.halfedge(f);
   const Point_2 a = uv_of(m.source(h)), b = uv_of(m.target(h)), c = uv_of(m.target(m.next(h)));
   return 0.5 * ((b.x() - a.x()) * (c.y() - a.y()) - (c.x() - a.x()) * (b.y() - a.y()));
+}
+
+/// The vertex numbers of face `f`, from the target of `halfedge(f)` on.
+inline std::vector<std::size_t> face_vertex_numbers(const Mesh& mesh, Mesh::Face_index f)
+{
+  std::vector<std::size_t> numbers;
+  for(Mesh::Halfedge_index h : CGAL::halfedges_around_face(halfedge(f, mesh), mesh))
+    numbers.push_back(std::size_t(target(h, mesh)));
+  return numbers;
+}
+
+/// True if `a` is `b` up to a rotation (the same polygon from another corner).
+inline bool same_cycle(std::vector<std::size_t> a, const std::vector<std::size_t>& b)
+{
+  for(std::size_t r = 0; r < a.size(); ++r) {
+    if(a == b)
+      return true;
+    std::rotate(a.begin(), a.begin() + 1, a.end());
+  }
+  return false;
+}
+
+/// The points and faces of a mesh file, read by hand.
+struct File_soup {
+  std::vector<std::array<double, 3>> points;
+  std::vector<std::vector<std::size_t>> faces;
+};
+
+/// A face written "k i1 ... ik", read from `in`.
+inline std::vector<std::size_t> read_face_indices(std::istream& in)
+{
+  std::size_t k = 0;
+  in >> k;
+  std::vector<std::size_t> f(k);
+  for(std::size_t& i : f)
+    in >> i;
+  return f;
+}
+
+/// An OFF file as CGAL's data files write it: "OFF", three counts, one vertex
+/// (three numbers) per line, then "k i1 ... ik" per face.
+inline File_soup parse_off(const std::string& file)
+{
+  std::ifstream in(file);
+  std::string keyword;
+  std::size_t nv = 0, nf = 0, ne = 0;
+  in >> keyword >> nv >> nf >> ne;
+  EXPECT_EQ(keyword, "OFF");
+  File_soup soup;
+  for(std::size_t i = 0; i < nv; ++i) {
+    std::array<double, 3> p;
+    in >> p[0] >> p[1] >> p[2];
+    soup.points.push_back(p);
+  }
+  for(std::size_t j = 0; j < nf; ++j)
+    soup.faces.push_back(read_face_indices(in));
+  EXPECT_TRUE(in) << file;
+  return soup;
+}
+
+/// CGAL's PLY reader with face colours, and vertex colours if asked for. A
+/// pitfall: CGAL 5.5 compiles it only when both are asked for, into the same
+/// iterator type.
+inline bool cgal_read_ply(const std::string& file, std::vector<Point_3>& points,
+                          std::vector<std::vector<std::size_t>>& polygons, std::vector<CGAL::IO::Color>& face_colors,
+                          bool binary = true, std::vector<CGAL::IO::Color>* vertex_colors = nullptr)
+{
+  std::vector<CGAL::IO::Color> ignored;
+  return CGAL::IO::read_PLY(file, points, polygons,
+                            CGAL::parameters::face_color_output_iterator(std::back_inserter(face_colors))
+                              .vertex_color_output_iterator(std::back_inserter(vertex_colors ? *vertex_colors : ignored))
+                              .use_binary_mode(binary)
+                              .verbose(false));
+}
+
+/// The bytes of `file`.
+inline std::string file_content(const std::string& file)
+{
+  std::ifstream in(file, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+/// The `Input_error` that `f()` throws (a failure if it throws none).
+template <class F>
+diffuv::Input_error input_error(F f)
+{
+  try {
+    f();
+  } catch(const diffuv::Input_error& e) {
+    return e;
+  }
+  ADD_FAILURE() << "no Input_error";
+  return diffuv::Input_error("", 0, "no error");
+}
+
+/// The message of the exception of type `E` that `f()` throws.
+template <class E, class F>
+std::string error_text(F f)
+{
+  try {
+    f();
+  } catch(const E& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "no exception";
+  return std::string();
 }
 
 /// A fixture with a fresh folder per test (named after the test and the

@@ -237,7 +237,7 @@ TEST_F(FuzzFoundMesh, OffFaceSizesCheckedBeforeCgalReads)
 // uninitialised position (found by fuzz_mesh_param: ASan SEGV), a short
 // coloured line past the end of its vector, colour values and colour-map
 // indices converted or looked up unchecked.
-TEST_F(FuzzFoundMesh, OffColoursNormalsAndTexturesCheckedBeforeCgalReads)
+TEST_F(FuzzFoundMesh, OffColorsNormalsAndTexturesCheckedBeforeCgalReads)
 {
   const std::string face = "3 0 1 2\n";
   expect({

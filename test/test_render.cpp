@@ -30,9 +30,9 @@ namespace {
 using diffuv_test::Mesh;
 using diffuv_test::Point_2;
 using diffuv_test::Point_3;
-using diffuv::Rgb8;
+using diffuv::Color;
 
-const Rgb8 red{255, 0, 0}, blue{0, 0, 255}, white{255, 255, 255};
+const Color red{255, 0, 0}, blue{0, 0, 255}, white{255, 255, 255};
 
 /// Corner uv = (x, y) of the corner's vertex.
 auto xy_uv(const Mesh& m)
@@ -50,7 +50,7 @@ auto nan_uv()
   });
 }
 
-auto uniform(Rgb8 c) { return [c](Mesh::Face_index) { return c; }; }
+auto uniform(Color c) { return [c](Mesh::Face_index) { return c; }; }
 
 diffuv::Render_options front(int isolines = 0)
 {
@@ -99,7 +99,7 @@ TEST(Render, TiltedFaceIsDarkerButTheSameHue)
   o.azimuth = 60; // cos 60 = 0.5: 0.25 + 0.75 * 0.5 = 0.625 of the colour
   o.elevation = 0;
   const diffuv::Image img = diffuv::render_mesh(m, m.points(), uniform(red), o);
-  const Rgb8 c = img.at(400, 300);
+  const Color c = img.at(400, 300);
   EXPECT_NEAR(int(c.r), 159, 1);
   EXPECT_EQ(int(c.g), 0);
   EXPECT_EQ(int(c.b), 0);
@@ -168,7 +168,7 @@ TEST(Render, ZBufferKeepsTheNearestFaceWhateverTheOrder)
   }
 }
 
-int count_in_row(const diffuv::Image& img, int y, int x0, int x1, Rgb8 c)
+int count_in_row(const diffuv::Image& img, int y, int x0, int x1, Color c)
 {
   int n = 0;
   for(int x = x0; x <= x1; ++x) n += img.at(x, y) == c;
@@ -227,7 +227,7 @@ TEST(Render, NoIsolinesWhereUvIsNaN)
   int lines = 0, reds = 0;
   for(int y = 0; y < img.height; y += 2)
     for(int x = 0; x < img.width; ++x) {
-      const Rgb8 c = img.at(x, y);
+      const Color c = img.at(x, y);
       lines += c == o.u_line_color || c == o.v_line_color;
       reds += c == red;
     }
@@ -257,21 +257,21 @@ TEST(Render, HeatColorRamp)
   EXPECT_NE(diffuv::heat_color(0), diffuv::heat_color(1));
   int previous = -1;
   for(int i = 0; i <= 40; ++i) {
-    const Rgb8 c = diffuv::heat_color(i / 40.);
+    const Color c = diffuv::heat_color(i / 40.);
     EXPECT_GT(int(c.g), previous) << i; // green strictly increases along the ramp
     previous = c.g;
   }
   EXPECT_EQ(diffuv::heat_color(-3), diffuv::heat_color(0));
   EXPECT_EQ(diffuv::heat_color(7), diffuv::heat_color(1));
-  EXPECT_EQ(diffuv::heat_color(0), (Rgb8{68, 1, 84}));
-  EXPECT_EQ(diffuv::heat_color(1), (Rgb8{253, 231, 37}));
+  EXPECT_EQ(diffuv::heat_color(0), (Color{68, 1, 84}));
+  EXPECT_EQ(diffuv::heat_color(1), (Color{253, 231, 37}));
 }
 
 TEST(Render, PatchColorsAreDistinctAndDeterministic)
 {
   std::set<std::tuple<int, int, int>> seen;
   for(std::size_t i = 0; i < 64; ++i) {
-    const Rgb8 c = diffuv::patch_color(i);
+    const Color c = diffuv::patch_color(i);
     EXPECT_TRUE(seen.emplace(c.r, c.g, c.b).second) << "patch " << i << " repeats " << c;
     EXPECT_EQ(diffuv::patch_color(i), c);
   }
@@ -285,12 +285,12 @@ TEST(Render, ColorBarAtTheRightEdge)
   EXPECT_EQ(img.at(390, 45), diffuv::heat_color(1));
   EXPECT_EQ(img.at(390, 254), diffuv::heat_color(0));
   EXPECT_EQ(img.at(390, 150), diffuv::heat_color(104. / 209.));
-  EXPECT_EQ(img.at(385, 150), (Rgb8{0, 0, 0})); // frame
+  EXPECT_EQ(img.at(385, 150), (Color{0, 0, 0})); // frame
   EXPECT_EQ(img.at(100, 150), white);            // the rest untouched
   EXPECT_EQ(img.at(390, 10), white);
   int dark = 0; // some text left of the bar (the values)
   for(int y = 40; y < 60; ++y)
-    for(int x = 330; x < 384; ++x) dark += img.at(x, y) == Rgb8{0, 0, 0};
+    for(int x = 330; x < 384; ++x) dark += img.at(x, y) == Color{0, 0, 0};
   EXPECT_GT(dark, 5);
   // A tiny image is clipped, not overrun.
   diffuv::Image tiny(5, 5);

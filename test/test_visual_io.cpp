@@ -217,12 +217,12 @@ TEST_F(VisualIo, CheckerTextureAlternatesWithAGrid)
   ASSERT_EQ(rgb.size(), static_cast<std::size_t>(size * size * 3));
   auto pixel = [&](int x, int y) {
     const unsigned char* p = &rgb[3 * (static_cast<std::size_t>(y) * size + x)];
-    return diffuv::Rgb{p[0], p[1], p[2]};
+    return diffuv::Color{p[0], p[1], p[2]};
   };
-  const diffuv::Rgb light{235, 235, 225}, dark{50, 90, 170}, grid{20, 20, 20};
+  const diffuv::Color light{235, 235, 225}, dark{50, 90, 170}, grid{20, 20, 20};
   // The two cell colours contrast (a difference of over 100 in each of R and G).
-  EXPECT_GT(light[0] - dark[0], 100);
-  EXPECT_GT(light[1] - dark[1], 100);
+  EXPECT_GT(light.r - dark.r, 100);
+  EXPECT_GT(light.g - dark.g, 100);
   // Every cell centre, alternating from a light top-left cell.
   for(int j = 0; j < cells; ++j)
     for(int i = 0; i < cells; ++i)

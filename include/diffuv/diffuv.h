@@ -5,7 +5,7 @@
 // checks that this list is complete). Not included: render/, the optional
 // diffuv::render target (pictures and PNG files, through stb).
 //
-//   core/             the vocabulary: Status and the error types, the four sides, colours
+//   core/             the vocabulary: Status and the error types, the four sides, colours and the label palette
 //   io/               reading: meshes (OFF, OBJ, PLY, STL), labels, painted regions, corners, colours; safe output files
 //   graph/            multi-source Dijkstra (Fibonacci heap), fast marching, exact geodesics, edge lengths
 //   patches/          labels -> disc patches: segmentation, boundary loops, corners and four sides, flat triangles
@@ -15,19 +15,21 @@
 //   parameterization/ diffusion coordinates, the fold repair, a disc or a whole mesh into an atlas
 //   cgal/             Diffusion_parameterizer_3, a model of CGAL's Parameterizer_3
 //   correspondence/   mesh A -> mesh B through (region, u, v); attribute transfer
-//   output/           writers: OBJ + MTL, uv table, SVG of a chart, labelled and coloured PLY
+//   output/           writers: OBJ + MTL, uv table, SVG of a chart, label files, labelled and coloured PLY
 #ifndef DIFFUV_DIFFUV_H
 #define DIFFUV_DIFFUV_H
 
+#include <diffuv/core/color.h>
 #include <diffuv/core/error.h>
 #include <diffuv/core/four_sides.h>
 
 #include <diffuv/io/atomic_file.h>
-#include <diffuv/io/labels.h>
+#include <diffuv/io/painted_labels.h>
+#include <diffuv/io/read_labels.h>
 #include <diffuv/io/read_mesh.h>
 #include <diffuv/io/read_obj_charts.h>
+#include <diffuv/io/read_vertex_colors.h>
 #include <diffuv/io/selection_file.h>
-#include <diffuv/io/vertex_colors.h>
 
 #include <diffuv/graph/distance_tags.h>
 #include <diffuv/graph/edge_length_map.h>
@@ -69,7 +71,9 @@
 #include <diffuv/correspondence/nearest_face_labels.h>
 #include <diffuv/correspondence/transfer.h>
 
+#include <diffuv/output/write_labels.h>
 #include <diffuv/output/write_obj.h>
+#include <diffuv/output/write_ply.h>
 #include <diffuv/output/write_svg.h>
 #include <diffuv/output/write_uv_table.h>
 

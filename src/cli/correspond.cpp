@@ -7,9 +7,12 @@
 #include <diffuv/correspondence/labelled_atlas.h>
 #include <diffuv/correspondence/nearest_face_labels.h>
 #include <diffuv/correspondence/transfer.h>
+#include <diffuv/core/color.h>
 #include <diffuv/io/atomic_file.h>
 #include <diffuv/internal/number_format.h>
-#include <diffuv/io/vertex_colors.h>
+#include <diffuv/io/internal/number_tokens.h>
+#include <diffuv/io/read_vertex_colors.h>
+#include <diffuv/output/write_ply.h>
 
 #include <CGAL/Polygon_mesh_processing/bbox.h>
 
@@ -104,19 +107,19 @@ std::vector<std::vector<double>> read_value_rows(const std::string& path, std::s
 }
 
 // A smooth colour field on B: its position in its bounding box, as red, green, blue.
-std::vector<diffuv::Rgb> position_colors(const Mesh& mesh)
+std::vector<diffuv::Color> position_colors(const Mesh& mesh)
 {
   const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(mesh);
-  std::vector<diffuv::Rgb> colors;
+  std::vector<diffuv::Color> colors;
   for(auto v : vertices(mesh)) {
     const auto& p = mesh.point(v);
-    diffuv::Rgb c;
+    unsigned char rgb[3];
     for(int k = 0; k < 3; ++k) {
       const double extent = box.max(k) - box.min(k);
       const double t = extent > 0 ? (p[k] - box.min(k)) / extent : 0.5;
-      c[static_cast<std::size_t>(k)] = static_cast<unsigned char>(std::lround(30 + 210 * std::clamp(t, 0., 1.)));
+      rgb[k] = static_cast<unsigned char>(std::lround(30 + 210 * std::clamp(t, 0., 1.)));
     }
-    colors.push_back(c);
+    colors.push_back(diffuv::Color{rgb[0], rgb[1], rgb[2]});
   }
   return colors;
 }
@@ -158,7 +161,7 @@ void run_correspond(const Correspond_options& o)
   // Colours are region names on both meshes: compare them by value. With
   // --transfer-labels, B's colours are data to carry, not regions.
   Paint_reading paint_a, paint_b;
-  paint_a.colour_values = paint_b.colour_values = true;
+  paint_a.color_values = paint_b.color_values = true;
   paint_b.read = !o.transfer_labels || !o.labels_b.empty();
   const Input_mesh a = read_input(o.mesh_a, pa, paint_a);
   Input_mesh b = read_input(o.mesh_b, pb, paint_b);
@@ -172,7 +175,7 @@ void run_correspond(const Correspond_options& o)
     transfer_ms = ms_since(t0);
     b.label_source = "labels of A's nearest faces (--transfer-labels)";
   }
-  std::vector<diffuv::Rgb> b_colors = diffuv::read_vertex_colors(b.path);
+  std::vector<diffuv::Color> b_colors = diffuv::read_vertex_colors(b.path);
   std::vector<std::vector<double>> value_rows;
   if(!o.values.empty()) value_rows = read_value_rows(o.values, num_vertices(b.mesh));
   const double read_ms = ms_since(start) - transfer_ms;
@@ -216,9 +219,9 @@ void run_correspond(const Correspond_options& o)
   t = Clock::now();
   const bool b_painted = !b_colors.empty();
   if(!b_painted) b_colors = position_colors(b.mesh);
-  const std::vector<diffuv::Rgb> a_colors = diffuv::transfer_vertex_values(
+  const std::vector<diffuv::Color> a_colors = diffuv::transfer_vertex_values(
       b.mesh, images, boost::make_iterator_property_map(b_colors.begin(), get(boost::vertex_index, b.mesh)),
-      diffuv::Rgb{{128, 128, 128}});
+      diffuv::Color{128, 128, 128});
 
   std::vector<std::string> inputs = {a.path, b.path, o.labels_a, o.labels_b, o.values};
   diffuv::Output_folder out(o.output, inputs);

@@ -5,7 +5,9 @@
 
 #include <diffuv/core/error.h>
 #include <diffuv/graph/distance_tags.h>
-#include <diffuv/io/labels.h>
+#include <diffuv/core/color.h>
+#include <diffuv/io/painted_labels.h>
+#include <diffuv/io/read_labels.h>
 #include <diffuv/io/read_mesh.h>
 #include <diffuv/parameterization/layout_judge.h>
 #include <diffuv/layout/disc_patches.h>
@@ -102,7 +104,7 @@ struct Paint_reading {
   /// A colour's label is its value (r * 65536 + g * 256 + b) rather than its
   /// rank among the file's colours: two meshes painted with different sets of
   /// colours still give one colour the same label (correspondence).
-  bool colour_values = false;
+  bool color_values = false;
 };
 
 /// Reads the mesh and its regions: `--labels` first, else painted colours or
@@ -122,16 +124,16 @@ inline Input_mesh read_input(const std::string& path, const Patch_cli_options& o
     if(painted.source != diffuv::Label_source::none) {
       polygon_labels = std::move(painted.polygon_labels);
       in.label_source = "regions painted in the mesh file (" + painted.property + ")";
-      if(paint.colour_values && !painted.colors.empty()) {
+      if(paint.color_values && !painted.colors.empty()) {
         // Colours of diffuv's palette (what `diffuv segment` paints) read back
         // as their label number; any other painting labels a colour by its value.
-        std::map<diffuv::Rgb, int> palette;
+        std::map<diffuv::Color, int> palette;
         for(int k = 0; k < 4096; ++k) palette.emplace(diffuv::label_color(k), k);
         bool all_in_palette = true;
-        for(const diffuv::Rgb& c : painted.colors) all_in_palette = all_in_palette && palette.count(c) > 0;
+        for(const diffuv::Color& c : painted.colors) all_in_palette = all_in_palette && palette.count(c) > 0;
         for(int& label : polygon_labels) {
-          const diffuv::Rgb& c = painted.colors[static_cast<std::size_t>(label)];
-          label = all_in_palette ? palette[c] : (c[0] << 16) | (c[1] << 8) | c[2];
+          const diffuv::Color& c = painted.colors[static_cast<std::size_t>(label)];
+          label = all_in_palette ? palette[c] : (c.r << 16) | (c.g << 8) | c.b;
         }
         in.label_source += all_in_palette ? ", diffuv's palette" : ", a colour's label is its value";
       }

@@ -266,8 +266,8 @@ diffuv::Image picture(const Input_mesh& in, const Parameterization& result, cons
       in.mesh, in.mesh.points(),
       [&](Mesh::Face_index f) {
         const double v = value[f.idx()];
-        if(flipped[f.idx()]) return diffuv::Rgb8{230, 0, 200};
-        if(std::isnan(v)) return diffuv::Rgb8{150, 150, 150};
+        if(flipped[f.idx()]) return diffuv::Color{230, 0, 200};
+        if(std::isnan(v)) return diffuv::Color{150, 150, 150};
         return diffuv::heat_color(top > 1. ? std::log(std::max(v, 1.)) / std::log(top) : 0.);
       },
       atlas.corner_uv_map(), look);

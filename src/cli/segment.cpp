@@ -4,7 +4,7 @@
 #include "inputs.h"
 
 #include <diffuv/io/atomic_file.h>
-#include <diffuv/io/labels.h>
+#include <diffuv/output/write_ply.h>
 #include <diffuv/patches/region_sides.h>
 
 #include <array>

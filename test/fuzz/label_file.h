@@ -9,7 +9,8 @@
 #include "fuzz_input.h"
 
 #include <diffuv/core/error.h>
-#include <diffuv/io/labels.h>
+#include <diffuv/io/read_labels.h>
+#include <diffuv/output/write_labels.h>
 
 #include <cstddef>
 #include <cstdint>

@@ -16,7 +16,8 @@
 
 #include <diffuv/atlas/Uv_atlas.h>
 #include <diffuv/core/error.h>
-#include <diffuv/io/labels.h>
+#include <diffuv/io/painted_labels.h>
+#include <diffuv/io/read_labels.h>
 #include <diffuv/io/read_mesh.h>
 #include <diffuv/parameterization/parameterize_patches.h>
 #include <diffuv/layout/disc_patches.h>

@@ -11,8 +11,8 @@
 #include "fuzz_input.h"
 
 #include <diffuv/core/error.h>
-#include <diffuv/io/labels.h>
-#include <diffuv/io/vertex_colors.h>
+#include <diffuv/io/painted_labels.h>
+#include <diffuv/io/read_vertex_colors.h>
 
 #include <cstddef>
 #include <cstdint>
@@ -33,11 +33,11 @@ inline void check_labels(const diffuv::Painted_labels& painted)
     check(painted.polygon_labels.empty(), "source none with labels");
     return;
   }
-  const bool colours = painted.source == Label_source::face_colors || painted.source == Label_source::vertex_colors;
-  check(colours != painted.colors.empty() || painted.polygon_labels.empty(), "colours given for a non-colour source");
+  const bool colors = painted.source == Label_source::face_colors || painted.source == Label_source::vertex_colors;
+  check(colors != painted.colors.empty() || painted.polygon_labels.empty(), "colours given for a non-colour source");
   for(int label : painted.polygon_labels) {
     check(label >= 0, "a negative label");
-    if(colours) check(static_cast<std::size_t>(label) < painted.colors.size(), "a colour label without its colour");
+    if(colors) check(static_cast<std::size_t>(label) < painted.colors.size(), "a colour label without its colour");
   }
 }
 

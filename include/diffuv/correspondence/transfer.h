@@ -5,6 +5,7 @@
 #ifndef DIFFUV_CORRESPONDENCE_TRANSFER_H
 #define DIFFUV_CORRESPONDENCE_TRANSFER_H
 
+#include <diffuv/core/color.h>
 #include <diffuv/correspondence/correspondence.h>
 
 #include <CGAL/barycenter.h>
@@ -48,6 +49,8 @@ Value weighted_value(const Value& a, const Value& b, const Value& c, const std::
     Value out;
     for(std::size_t k = 0; k < out.size(); ++k) out[k] = weighted_scalar(a[k], b[k], c[k], w);
     return out;
+  } else if constexpr(std::is_same_v<Value, Color>) {
+    return Color{weighted_scalar(a.r, b.r, c.r, w), weighted_scalar(a.g, b.g, c.g, w), weighted_scalar(a.b, b.b, c.b, w)};
   } else {
     // CGAL points (Point_2, Point_3): an affine combination.
     return CGAL::barycenter(a, w[0], b, w[1], c, w[2]);
@@ -58,8 +61,8 @@ Value weighted_value(const Value& a, const Value& b, const Value& c, const std::
 
 /// The value at surface point `p` of B: the barycentric mix of `values` at the
 /// three vertices of its face. Works for arithmetic values (rounded and clamped
-/// for integer types), `std::array`s of them (colours), and CGAL points
-/// (texture coordinates, positions).
+/// for integer types), `std::array`s of them, `Color`s (each channel rounded
+/// and clamped), and CGAL points (texture coordinates, positions).
 /// \pre `p.mapped()`
 template <class MeshB, class Point_3, class VertexValueMap>
 typename boost::property_traits<VertexValueMap>::value_type

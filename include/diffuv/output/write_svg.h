@@ -36,7 +36,7 @@
 namespace diffuv {
 
 /// The colours of `write_uv_layout_svg()` (SVG colour strings).
-struct Uv_layout_colours {
+struct Uv_layout_colors {
   static constexpr const char* face = "#dce6f2";       ///< fill of a well-oriented face (light blue-grey)
   static constexpr const char* edge = "#808080";       ///< stroke of every face (grey)
   static constexpr const char* flipped = "#e02020";    ///< fill of a flipped face (red)
@@ -86,7 +86,7 @@ inline void write_svg_number(std::ostream& out, double x)
 ///   filled red, a face of (nearly) zero area is *degenerate* and drawn
 ///   orange (fill and a thicker stroke, since it has no inside); flipped and
 ///   degenerate faces also carry `class="flipped"` / `class="degenerate"`
-///   (colours in `Uv_layout_colours`);
+///   (colours in `Uv_layout_colors`);
 /// - the outline of the unit square;
 /// - if `sides` is given, each side as a thick `<polyline>` through the uv of
 ///   its vertices in this chart, in its own colour, and a legend (`<text>`)
@@ -172,7 +172,7 @@ void write_uv_layout_svg(std::ostream& out, const Uv_atlas<TriangleMesh, Kernel>
 
   // Everything in uv: flip y so that v goes up.
   out << "<g transform=\"matrix(1 0 0 -1 0 1)\" stroke-linejoin=\"round\" stroke-linecap=\"round\">\n";
-  out << "<g id=\"faces\" fill=\"" << Uv_layout_colours::face << "\" stroke=\"" << Uv_layout_colours::edge
+  out << "<g id=\"faces\" fill=\"" << Uv_layout_colors::face << "\" stroke=\"" << Uv_layout_colors::edge
       << "\" stroke-width=\"";
   write_svg_number(out, 0.5 * px);
   out << "\">\n";
@@ -184,10 +184,10 @@ void write_uv_layout_svg(std::ostream& out, const Uv_atlas<TriangleMesh, Kernel>
     if(!finite) continue;
     out << "<polygon";
     if(kind[f] == Kind::flipped)
-      out << " class=\"flipped\" fill=\"" << Uv_layout_colours::flipped << '"';
+      out << " class=\"flipped\" fill=\"" << Uv_layout_colors::flipped << '"';
     else if(kind[f] == Kind::degenerate) {
-      out << " class=\"degenerate\" fill=\"" << Uv_layout_colours::degenerate << "\" stroke=\""
-          << Uv_layout_colours::degenerate << "\" stroke-width=\"";
+      out << " class=\"degenerate\" fill=\"" << Uv_layout_colors::degenerate << "\" stroke=\""
+          << Uv_layout_colors::degenerate << "\" stroke-width=\"";
       write_svg_number(out, 2 * px);
       out << '"';
     }
@@ -203,7 +203,7 @@ void write_uv_layout_svg(std::ostream& out, const Uv_atlas<TriangleMesh, Kernel>
   out << "</g>\n";
 
   out << "<rect id=\"unit_square\" x=\"0\" y=\"0\" width=\"1\" height=\"1\" fill=\"none\" stroke=\""
-      << Uv_layout_colours::square << "\" stroke-width=\"";
+      << Uv_layout_colors::square << "\" stroke-width=\"";
   write_svg_number(out, 1.5 * px);
   out << "\"/>\n";
 
@@ -213,7 +213,7 @@ void write_uv_layout_svg(std::ostream& out, const Uv_atlas<TriangleMesh, Kernel>
     write_svg_number(out, 4 * px);
     out << "\" stroke-opacity=\"0.85\">\n";
     for(Side s : all_sides) {
-      out << "<polyline class=\"side_" << side_name(s) << "\" stroke=\"" << Uv_layout_colours::sides[static_cast<std::size_t>(s)]
+      out << "<polyline class=\"side_" << side_name(s) << "\" stroke=\"" << Uv_layout_colors::sides[static_cast<std::size_t>(s)]
           << "\" points=\"";
       bool first = true;
       for(const auto& v : (*sides)[s]) {
@@ -250,7 +250,7 @@ void write_uv_layout_svg(std::ostream& out, const Uv_atlas<TriangleMesh, Kernel>
       write_svg_number(out, text_x + s * 0.25 * (umax - umin));
       out << "\" y=\"";
       write_svg_number(out, text_y);
-      out << "\" fill=\"" << Uv_layout_colours::sides[s] << "\">" << side_labels[s] << "</text>\n";
+      out << "\" fill=\"" << Uv_layout_colors::sides[s] << "\">" << side_labels[s] << "</text>\n";
     }
   }
   out << "</g>\n</svg>\n";

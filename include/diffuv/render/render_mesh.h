@@ -22,6 +22,7 @@
 #ifndef DIFFUV_RENDER_RENDER_MESH_H
 #define DIFFUV_RENDER_RENDER_MESH_H
 
+#include <diffuv/core/color.h>
 #include <diffuv/core/error.h>
 #include <diffuv/io/atomic_file.h>
 #include <diffuv/render/texture.h>
@@ -55,17 +56,6 @@
 
 namespace diffuv {
 
-/// A colour, 8 bits per channel.
-struct Rgb8 {
-  unsigned char r = 0, g = 0, b = 0;
-  friend bool operator==(const Rgb8& a, const Rgb8& b) { return a.r == b.r && a.g == b.g && a.b == b.b; }
-  friend bool operator!=(const Rgb8& a, const Rgb8& b) { return !(a == b); }
-  friend std::ostream& operator<<(std::ostream& os, const Rgb8& c)
-  {
-    return os << '(' << int(c.r) << ',' << int(c.g) << ',' << int(c.b) << ')';
-  }
-};
-
 /// An RGB image: `width * height * 3` bytes in `rgb`, row-major, top row
 /// first, channels in the order r, g, b. Pixel (0, 0) is the top-left one.
 struct Image {
@@ -75,7 +65,7 @@ struct Image {
   Image() = default;
   /// Makes a `width` x `height` image filled with `fill`.
   /// \throws std::invalid_argument if a size is negative
-  Image(int w, int h, Rgb8 fill = {255, 255, 255}) : width(w), height(h)
+  Image(int w, int h, Color fill = {255, 255, 255}) : width(w), height(h)
   {
     if(w < 0 || h < 0) throw std::invalid_argument("diffuv::Image: negative size");
     rgb.resize(std::size_t(w) * std::size_t(h) * 3);
@@ -86,15 +76,15 @@ struct Image {
   bool contains(int x, int y) const { return x >= 0 && y >= 0 && x < width && y < height; }
 
   /// Returns the colour of pixel (x, y). \throws std::out_of_range outside the image
-  Rgb8 at(int x, int y) const
+  Color at(int x, int y) const
   {
     if(!contains(x, y)) throw std::out_of_range("diffuv::Image::at: pixel outside the image");
     const std::size_t i = offset(x, y);
-    return Rgb8{rgb[i], rgb[i + 1], rgb[i + 2]};
+    return Color{rgb[i], rgb[i + 1], rgb[i + 2]};
   }
 
   /// Sets the colour of pixel (x, y). \throws std::out_of_range outside the image
-  void set(int x, int y, Rgb8 c)
+  void set(int x, int y, Color c)
   {
     if(!contains(x, y)) throw std::out_of_range("diffuv::Image::set: pixel outside the image");
     const std::size_t i = offset(x, y);
@@ -114,11 +104,11 @@ struct Render_options {
   View view = View::iso;              ///< the camera, unless `use_angles`
   bool use_angles = false;            ///< use `azimuth` and `elevation` instead of `view`
   double azimuth = 30, elevation = 20;///< degrees, see the conventions at the top of this header
-  Rgb8 background{255, 255, 255};
+  Color background{255, 255, 255};
   int isolines = 10;                  ///< u and v isolines every 1/isolines (0: none)
   double line_width = 1.0;            ///< isoline width in pixels (approximately)
-  Rgb8 u_line_color{10, 40, 130};     ///< colour of the lines u = k / isolines (dark blue)
-  Rgb8 v_line_color{130, 20, 20};     ///< colour of the lines v = k / isolines (dark red)
+  Color u_line_color{10, 40, 130};     ///< colour of the lines u = k / isolines (dark blue)
+  Color v_line_color{130, 20, 20};     ///< colour of the lines v = k / isolines (dark red)
   double margin = 0.05;               ///< fraction of the width and height left empty on each side
   double ambient = 0.25;              ///< shade of a face seen edge-on; a face facing the camera gets its full colour
 };
@@ -216,7 +206,7 @@ inline double isoline_pixel_distance(double t, int n, double gradient_length)
 ///
 /// \tparam TriangleMesh a model of `FaceListGraph`
 /// \tparam VertexPointMap a readable property map, vertex_descriptor -> a CGAL `Point_3`
-/// \tparam FaceColor a callable face_descriptor -> `Rgb8`
+/// \tparam FaceColor a callable face_descriptor -> `Color`
 /// \tparam CornerUvMap a readable property map, halfedge_descriptor -> a point with
 ///         `x()` (u) and `y()` (v) giving the (u,v) of `target(h)` in `face(h)`, such as
 ///         `Uv_atlas::corner_uv_map()`; a NaN on any corner of a face means no isolines there
@@ -231,8 +221,8 @@ Image render_mesh(const TriangleMesh& tm, VertexPointMap vpm, FaceColor face_col
   using vertex_descriptor = typename GT::vertex_descriptor;
   using halfedge_descriptor = typename GT::halfedge_descriptor;
   using face_descriptor = typename GT::face_descriptor;
-  static_assert(std::is_invocable_r_v<Rgb8, FaceColor&, face_descriptor>,
-                "render_mesh: face_color must be callable as face_color(face_descriptor) -> diffuv::Rgb8");
+  static_assert(std::is_invocable_r_v<Color, FaceColor&, face_descriptor>,
+                "render_mesh: face_color must be callable as face_color(face_descriptor) -> diffuv::Color");
   using internal::Vec3;
 
   if(options.width <= 0 || options.height <= 0)
@@ -285,7 +275,7 @@ Image render_mesh(const TriangleMesh& tm, VertexPointMap vpm, FaceColor face_col
     corners.clear();
     for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, tm), tm)) corners.push_back(h);
     if(corners.size() < 3) continue;
-    const Rgb8 base = face_color(f);
+    const Color base = face_color(f);
 
     for(std::size_t k = 1; k + 1 < corners.size(); ++k) {
       const halfedge_descriptor hs[3] = {corners[0], corners[k], corners[k + 1]};
@@ -309,7 +299,7 @@ Image render_mesh(const TriangleMesh& tm, VertexPointMap vpm, FaceColor face_col
       const double nn = std::sqrt(internal::dot(n, n));
       const double cosine = nn > 0. ? std::abs(internal::dot(n, cam.toward)) / nn : 0.;
       const double shade = ambient + (1. - ambient) * cosine;
-      const Rgb8 shaded{internal::to_byte(base.r * shade), internal::to_byte(base.g * shade),
+      const Color shaded{internal::to_byte(base.r * shade), internal::to_byte(base.g * shade),
                         internal::to_byte(base.b * shade)};
 
       // Screen gradients of u and v (units per pixel), for line widths in pixels.
@@ -342,7 +332,7 @@ Image render_mesh(const TriangleMesh& tm, VertexPointMap vpm, FaceColor face_col
           double& zb = depth[std::size_t(py) * std::size_t(W) + std::size_t(px)];
           if(!(z > zb)) continue;
           zb = z;
-          Rgb8 c = shaded;
+          Color c = shaded;
           if(has_uv) {
             const double du = internal::isoline_pixel_distance(w0 * u[0] + w1 * u[1] + w2 * u[2], N, grad_u);
             const double dv = internal::isoline_pixel_distance(w0 * v[0] + w1 * v[1] + w2 * v[2], N, grad_v);
@@ -365,9 +355,9 @@ Image render_mesh(const TriangleMesh& tm, VertexPointMap vpm, FaceColor face_col
 
 /// Returns the colour of patch `patch`: a fixed palette of 12 light, distinct
 /// colours (isolines stay readable on them), then golden-ratio hues for larger indices.
-inline Rgb8 patch_color(std::size_t patch)
+inline Color patch_color(std::size_t patch)
 {
-  static const Rgb8 palette[12] = {
+  static const Color palette[12] = {
     {141, 211, 199}, {255, 237, 111}, {190, 186, 218}, {251, 128, 114}, {128, 177, 211}, {253, 180, 98},
     {179, 222, 105}, {252, 205, 229}, {188, 128, 189}, {204, 235, 197}, {217, 217, 217}, {255, 179, 71}};
   if(patch < 12) return palette[patch];
@@ -386,21 +376,21 @@ inline Rgb8 patch_color(std::size_t patch)
     case 4: r = t; g = p; b = val; break;
     default: r = val; g = p; b = q; break;
   }
-  return Rgb8{internal::to_byte(255 * r), internal::to_byte(255 * g), internal::to_byte(255 * b)};
+  return Color{internal::to_byte(255 * r), internal::to_byte(255 * g), internal::to_byte(255 * b)};
 }
 
 /// Returns the colour of `t` on a viridis ramp (nine stops of matplotlib's
 /// viridis, linearly interpolated): dark purple at 0, yellow at 1. The green
 /// channel increases strictly with `t`. `t` is clamped to [0, 1]; NaN gives grey (128, 128, 128).
-inline Rgb8 heat_color(double t)
+inline Color heat_color(double t)
 {
   static const double stops[9][3] = {{68, 1, 84},    {71, 44, 122},  {59, 81, 139},  {44, 113, 142}, {33, 144, 141},
                                      {39, 173, 129}, {92, 200, 99},  {170, 220, 50}, {253, 231, 37}};
-  if(std::isnan(t)) return Rgb8{128, 128, 128};
+  if(std::isnan(t)) return Color{128, 128, 128};
   const double x = std::clamp(t, 0., 1.) * 8.;
   const int i = (std::min)(int(x), 7);
   const double f = x - i;
-  return Rgb8{internal::to_byte(stops[i][0] + f * (stops[i + 1][0] - stops[i][0])),
+  return Color{internal::to_byte(stops[i][0] + f * (stops[i + 1][0] - stops[i][0])),
               internal::to_byte(stops[i][1] + f * (stops[i + 1][1] - stops[i][1])),
               internal::to_byte(stops[i][2] + f * (stops[i + 1][2] - stops[i][2]))};
 }
@@ -409,7 +399,7 @@ namespace internal {
 
 /// Draws `text` (printable ASCII) with stb_easy_font, its top-left corner at
 /// (x, y), each font unit `zoom` pixels; pixels outside the image are skipped.
-inline void draw_text(Image& image, int x, int y, const std::string& text, Rgb8 color, int zoom = 1)
+inline void draw_text(Image& image, int x, int y, const std::string& text, Color color, int zoom = 1)
 {
   std::vector<char> chars;
   for(char ch : text) chars.push_back(ch >= 32 && ch < 127 ? ch : '?');
@@ -456,7 +446,7 @@ inline void draw_color_bar(Image& image, double min_value, double max_value, con
   const int gap = (std::max)(4, W / 100);
   const int bx1 = W - gap, bx0 = bx1 - bar_width;   // columns [bx0, bx1)
   const int by0 = int(H * 0.15), by1 = int(H * 0.85); // rows [by0, by1)
-  const Rgb8 black{0, 0, 0};
+  const Color black{0, 0, 0};
   for(int y = by0; y < by1; ++y) {
     const double t = by1 - by0 > 1 ? double(by1 - 1 - y) / double(by1 - by0 - 1) : 0.5;
     for(int x = bx0; x < bx1; ++x)

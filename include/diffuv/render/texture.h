@@ -14,6 +14,7 @@
 #ifndef DIFFUV_RENDER_TEXTURE_H
 #define DIFFUV_RENDER_TEXTURE_H
 
+#include <diffuv/core/color.h>
 #include <diffuv/core/error.h>
 #include <diffuv/io/atomic_file.h>
 
@@ -37,7 +38,6 @@
 #pragma GCC diagnostic pop
 #endif
 
-#include <array>
 #include <cstddef>
 #include <ostream>
 #include <stdexcept>
@@ -46,19 +46,16 @@
 
 namespace diffuv {
 
-/// An RGB colour, 8 bits per channel.
-using Rgb = std::array<unsigned char, 3>;
-
 /// The colours of `checker_texture()`.
-struct Checker_colours {
-  static constexpr Rgb light = {235, 235, 225}; ///< cells whose row + column is even (the top-left cell)
-  static constexpr Rgb dark = {50, 90, 170};    ///< the other cells
-  static constexpr Rgb grid = {20, 20, 20};     ///< the lines between cells and around the image
+struct Checker_colors {
+  static constexpr Color light = {235, 235, 225}; ///< cells whose row + column is even (the top-left cell)
+  static constexpr Color dark = {50, 90, 170};    ///< the other cells
+  static constexpr Color grid = {20, 20, 20};     ///< the lines between cells and around the image
 };
 
 /// Returns a checkerboard image: `size` x `size` RGB pixels, `cells` x `cells`
-/// cells of alternating `Checker_colours::light` and `Checker_colours::dark`,
-/// with a thin `Checker_colours::grid` line along every cell border.
+/// cells of alternating `Checker_colors::light` and `Checker_colors::dark`,
+/// with a thin `Checker_colors::grid` line along every cell border.
 ///
 /// Pixels are row by row from the top (row 0 is v = 1 once mapped, as in
 /// PNG), 3 bytes each: `3 * (y * size + x) + channel`. Pixel column x lies in
@@ -90,12 +87,12 @@ inline std::vector<unsigned char> checker_texture(int size = 512, int cells = 8)
   std::vector<unsigned char> rgb(static_cast<std::size_t>(size) * size * 3);
   for(int y = 0; y < size; ++y)
     for(int x = 0; x < size; ++x) {
-      const Rgb& c = (on_line[x] || on_line[y]) ? Checker_colours::grid
-                     : ((cell[x] + cell[y]) % 2 == 0 ? Checker_colours::light : Checker_colours::dark);
+      const Color& c = (on_line[x] || on_line[y]) ? Checker_colors::grid
+                       : ((cell[x] + cell[y]) % 2 == 0 ? Checker_colors::light : Checker_colors::dark);
       unsigned char* p = &rgb[3 * (static_cast<std::size_t>(y) * size + x)];
-      p[0] = c[0];
-      p[1] = c[1];
-      p[2] = c[2];
+      p[0] = c.r;
+      p[1] = c.g;
+      p[2] = c.b;
     }
   return rgb;
 }

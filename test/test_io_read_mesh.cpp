@@ -1,23 +1,19 @@
-// Tests of include/diffuv/io: the mesh reader (vertex order, every
-// rejection with its exact message and line), selection files, the OBJ
-// writer (round trip, seams) and atomic output files.
+// Tests of include/diffuv/io/read_mesh.h and the pieces in io/internal/: the
+// vertex order of real meshes; every rejection with its exact message and
+// line (file names and formats, the OFF, OBJ, PLY and STL scanners, the
+// checks of the polygon soup); polygons cut into triangles that know their
+// polygon.
 //
 // Expectations come from the files themselves, parsed here by hand, not
 // from CGAL's readers.
 #include "test_data.h"
 
-#include <diffuv/io/atomic_file.h>
 #include <diffuv/io/read_mesh.h>
-#include <diffuv/io/selection_file.h>
-#include <diffuv/output/write_obj.h>
 
 #include <gtest/gtest.h>
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <array>
-#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
@@ -31,67 +27,26 @@
 namespace {
 
 namespace fs = std::filesystem;
+using diffuv_test::File_soup;
 using diffuv_test::Mesh;
-using diffuv_test::Point_2;
 using diffuv_test::Point_3;
 using vertex_descriptor = boost::graph_traits<Mesh>::vertex_descriptor;
-using halfedge_descriptor = boost::graph_traits<Mesh>::halfedge_descriptor;
 using face_descriptor = boost::graph_traits<Mesh>::face_descriptor;
 
-using IoTest = diffuv_test::Temp_dir_test;
-
-using IoReadMesh = IoTest;
-using IoSelection = IoTest;
-using IoWriteObj = IoTest;
-using IoAtomicFile = IoTest;
+using IoReadMesh = diffuv_test::Temp_dir_test;
 
 // Reads `file` and returns the Input_error it must throw.
 diffuv::Input_error read_error(const std::string& file)
 {
-  Mesh mesh;
-  try {
+  return diffuv_test::input_error([&] {
+    Mesh mesh;
     diffuv::read_triangle_mesh(file, mesh);
-  } catch(const diffuv::Input_error& e) {
-    return e;
-  }
-  ADD_FAILURE() << file << " was read without error";
-  return diffuv::Input_error(file, 0, "no error");
+  });
 }
 
 // ---------------------------------------------------------------------------
-// Hand-written parsers of the real files: the expected points and faces.
-
-struct File_soup {
-  std::vector<std::array<double, 3>> points;
-  std::vector<std::vector<std::size_t>> faces;
-};
-
-// OFF as CGAL's data files write it: "OFF", three counts, one vertex
-// (three numbers) per line, then "k i1 ... ik" per face.
-File_soup parse_off(const std::string& file)
-{
-  std::ifstream in(file);
-  std::string keyword;
-  std::size_t nv = 0, nf = 0, ne = 0;
-  in >> keyword >> nv >> nf >> ne;
-  EXPECT_EQ(keyword, "OFF");
-  File_soup soup;
-  for(std::size_t i = 0; i < nv; ++i) {
-    std::array<double, 3> p;
-    in >> p[0] >> p[1] >> p[2];
-    soup.points.push_back(p);
-  }
-  for(std::size_t j = 0; j < nf; ++j) {
-    std::size_t k = 0;
-    in >> k;
-    std::vector<std::size_t> f(k);
-    for(std::size_t& i : f)
-      in >> i;
-    soup.faces.push_back(f);
-  }
-  EXPECT_TRUE(in) << file;
-  return soup;
-}
+// Hand-written parsers of the real files: the expected points and faces
+// (OFF: diffuv_test::parse_off()).
 
 // ASCII PLY whose first element is "vertex" starting with x y z, and whose
 // second is "face" starting with the index list.
@@ -118,12 +73,7 @@ File_soup parse_ascii_ply(const std::string& file)
   for(std::size_t j = 0; j < counts.at(1); ++j) {
     std::getline(in, line);
     std::istringstream words(line);
-    std::size_t k = 0;
-    words >> k;
-    std::vector<std::size_t> f(k);
-    for(std::size_t& i : f)
-      words >> i;
-    soup.faces.push_back(f);
+    soup.faces.push_back(diffuv_test::read_face_indices(words));
   }
   return soup;
 }
@@ -157,25 +107,6 @@ File_soup parse_binary_stl(const std::string& file)
   return soup;
 }
 
-// The vertex numbers of face f, starting at the corner of halfedge(f).
-std::vector<std::size_t> face_vertex_numbers(const Mesh& mesh, face_descriptor f)
-{
-  std::vector<std::size_t> numbers;
-  for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, mesh), mesh))
-    numbers.push_back(std::size_t(target(h, mesh)));
-  return numbers;
-}
-
-bool same_cycle(std::vector<std::size_t> a, const std::vector<std::size_t>& b)
-{
-  for(std::size_t r = 0; r < a.size(); ++r) {
-    if(a == b)
-      return true;
-    std::rotate(a.begin(), a.begin() + 1, a.end());
-  }
-  return false;
-}
-
 // Checks that the mesh read from `file` has the file's points in the file's
 // order and the file's faces in the file's order.
 void expect_same_as_file(const std::string& file, const File_soup& soup)
@@ -200,7 +131,7 @@ void expect_same_as_file(const std::string& file, const File_soup& soup)
 
   std::size_t j = 0, wrong_faces = 0;
   for(face_descriptor f : faces(mesh))
-    if(!same_cycle(face_vertex_numbers(mesh, f), soup.faces[j++]))
+    if(!diffuv_test::same_cycle(diffuv_test::face_vertex_numbers(mesh, f), soup.faces[j++]))
       ++wrong_faces;
   EXPECT_EQ(wrong_faces, 0u) << file;
 
@@ -218,14 +149,14 @@ TEST(IoReadMeshReal, OffKeepsTheFileOrder)
 {
   for(const char* name : {"cow.off", "nefertiti.off"}) {
     const std::string file = diffuv_test::data_path(std::string("meshes/") + name);
-    const File_soup soup = parse_off(file);
+    const File_soup soup = diffuv_test::parse_off(file);
     expect_same_as_file(file, soup);
   }
   // The counts of the headers, written in the files.
-  EXPECT_EQ(parse_off(diffuv_test::data_path("meshes/cow.off")).points.size(), 2904u);
-  EXPECT_EQ(parse_off(diffuv_test::data_path("meshes/cow.off")).faces.size(), 5804u);
-  EXPECT_EQ(parse_off(diffuv_test::data_path("meshes/nefertiti.off")).points.size(), 299u);
-  EXPECT_EQ(parse_off(diffuv_test::data_path("meshes/nefertiti.off")).faces.size(), 562u);
+  EXPECT_EQ(diffuv_test::parse_off(diffuv_test::data_path("meshes/cow.off")).points.size(), 2904u);
+  EXPECT_EQ(diffuv_test::parse_off(diffuv_test::data_path("meshes/cow.off")).faces.size(), 5804u);
+  EXPECT_EQ(diffuv_test::parse_off(diffuv_test::data_path("meshes/nefertiti.off")).points.size(), 299u);
+  EXPECT_EQ(diffuv_test::parse_off(diffuv_test::data_path("meshes/nefertiti.off")).faces.size(), 562u);
 }
 
 TEST(IoReadMeshReal, PlyKeepsTheFileOrder)
@@ -394,7 +325,7 @@ TEST_F(IoReadMesh, ObjWithTexturesAndNegativeIndices)
   EXPECT_EQ(report.vertices, 4u);
   EXPECT_EQ(report.faces, 2u);
   const face_descriptor second = *std::next(faces(mesh).begin());
-  EXPECT_TRUE(same_cycle(face_vertex_numbers(mesh, second), {1, 3, 2}));
+  EXPECT_TRUE(diffuv_test::same_cycle(diffuv_test::face_vertex_numbers(mesh, second), {1, 3, 2}));
 }
 
 // ---------------------------------------------------------------------------
@@ -501,7 +432,7 @@ TEST_F(IoReadMesh, PolygonsAreTriangulated)
   EXPECT_EQ(report.isolated_vertices, 0u);
   std::size_t triangles = 0;
   for(face_descriptor f : faces(mesh))
-    if(face_vertex_numbers(mesh, f).size() == 3)
+    if(diffuv_test::face_vertex_numbers(mesh, f).size() == 3)
       ++triangles;
   EXPECT_EQ(triangles, 7u);
   EXPECT_EQ(num_vertices(mesh), 8u);
@@ -522,7 +453,7 @@ void expect_faces_come_from(const Mesh& mesh, const diffuv::Mesh_read_report& re
     const std::size_t j = report.file_face[f++];
     ASSERT_LT(j, polygons.size());
     ++triangles[j];
-    for(std::size_t v : face_vertex_numbers(mesh, face))
+    for(std::size_t v : diffuv_test::face_vertex_numbers(mesh, face))
       EXPECT_NE(std::find(polygons[j].begin(), polygons[j].end(), v), polygons[j].end())
         << "face " << f - 1 << " has vertex " << v << ", not a corner of polygon " << j;
   }
@@ -592,379 +523,6 @@ TEST_F(IoReadMesh, TriangulationMustNotDuplicateAnEdge)
   const diffuv::Input_error e = read_error(write("pillow.off", content));
   EXPECT_EQ(e.reason(), "face 0 cannot be triangulated without a second edge between vertices 0 and 2");
   EXPECT_EQ(e.line(), 7u);
-}
-
-// ---------------------------------------------------------------------------
-// Selection files
-
-TEST_F(IoSelection, ReadsCgalSquareCorners)
-{
-  const std::string file = diffuv_test::data_path("selections/square_corners.selection.txt");
-  const std::vector<std::size_t> indices = diffuv::read_selection_file(file);
-  EXPECT_EQ(indices, (std::vector<std::size_t>{133, 8, 0, 287}));
-
-  const Mesh& mesh = diffuv_test::cgal_mesh("nefertiti.off");
-  const std::vector<vertex_descriptor> corners = diffuv::selection_vertices(mesh, indices, file);
-  ASSERT_EQ(corners.size(), 4u);
-  for(std::size_t k = 0; k < 4; ++k)
-    EXPECT_EQ(corners[k], *std::next(vertices(mesh).begin(), static_cast<std::ptrdiff_t>(indices[k])));
-}
-
-TEST_F(IoSelection, CgalSelectionWithoutVertices)
-{
-  // lion.selection.txt selects edges only (its first line is empty).
-  const std::string file = diffuv_test::data_path("selections/lion.selection.txt");
-  try {
-    diffuv::read_selection_file(file);
-    ADD_FAILURE() << "no error";
-  } catch(const diffuv::Input_error& e) {
-    EXPECT_EQ(std::string(e.what()), file + ":1: no vertex index on the first line");
-  }
-}
-
-TEST_F(IoSelection, Errors)
-{
-  struct Case { std::string content; std::size_t line; std::string reason; };
-  const Case cases[] = {
-    {"", 1, "no vertex index on the first line"},
-    {"   \n1 2 3\n", 1, "no vertex index on the first line"},
-    {"1 2 x\n", 1, "\"x\" is not a vertex index (a non-negative integer)"},
-    {"4 -3\n", 1, "\"-3\" is not a vertex index (a non-negative integer)"},
-    {"1.5\n", 1, "\"1.5\" is not a vertex index (a non-negative integer)"},
-    {"+2\n", 1, "\"+2\" is not a vertex index (a non-negative integer)"},
-    {"7 99999999999999999999999\n", 1, "vertex index 99999999999999999999999 is too large"},
-    {std::string("3 \x01\0\n", 5), 1, "\"\\x01\\x00\" is not a vertex index (a non-negative integer)"},
-  };
-  int k = 0;
-  for(const Case& c : cases) {
-    const std::string file = write("s" + std::to_string(k++) + ".selection.txt", c.content);
-    try {
-      diffuv::read_selection_file(file);
-      ADD_FAILURE() << "no error for " << c.content;
-    } catch(const diffuv::Input_error& e) {
-      EXPECT_EQ(e.reason(), c.reason);
-      EXPECT_EQ(e.line(), c.line);
-      EXPECT_EQ(e.file(), file);
-    }
-  }
-  try {
-    diffuv::read_selection_file(path("missing.selection.txt"));
-    ADD_FAILURE() << "no error";
-  } catch(const diffuv::Input_error& e) {
-    EXPECT_EQ(std::string(e.what()), path("missing.selection.txt") + ": cannot open file");
-  }
-}
-
-TEST_F(IoSelection, ByteOrderMarkIsSkipped)
-{
-  EXPECT_EQ(diffuv::read_selection_file(write("bom.txt", "\xEF\xBB\xBF" "0 2 8 6\n")),
-            (std::vector<std::size_t>{0, 2, 8, 6}));
-}
-
-TEST_F(IoSelection, TabsCarriageReturnsAndOtherLines)
-{
-  const std::string file = write("ok.selection.txt", "3\t1  2 \r\n5 6\n0 1\n");
-  EXPECT_EQ(diffuv::read_selection_file(file), (std::vector<std::size_t>{3, 1, 2}));
-}
-
-TEST_F(IoSelection, IndexOutOfRange)
-{
-  const Mesh& mesh = diffuv_test::cgal_mesh("nefertiti.off");
-  ASSERT_EQ(num_vertices(mesh), 299u);
-  EXPECT_EQ(diffuv::selection_vertices(mesh, {298}, "s.txt").size(), 1u);
-  try {
-    diffuv::selection_vertices(mesh, {0, 299}, "s.txt");
-    ADD_FAILURE() << "no error";
-  } catch(const diffuv::Input_error& e) {
-    EXPECT_EQ(std::string(e.what()), "s.txt:1: vertex index 299 is out of range (the mesh has 299 vertices)");
-  }
-}
-
-// ---------------------------------------------------------------------------
-// OBJ writer
-
-struct Obj_file {
-  std::vector<std::array<double, 3>> v;
-  std::vector<std::array<double, 2>> vt;
-  std::vector<std::vector<std::array<std::size_t, 2>>> f; // 1-based (v, vt) per corner
-  std::vector<std::string> other;                          // lines of other kinds
-};
-
-Obj_file parse_written_obj(const std::string& file)
-{
-  Obj_file obj;
-  std::ifstream in(file);
-  std::string line;
-  while(std::getline(in, line)) {
-    std::istringstream words(line);
-    std::string kind;
-    words >> kind;
-    if(kind == "v") {
-      std::array<double, 3> p;
-      words >> p[0] >> p[1] >> p[2];
-      obj.v.push_back(p);
-    } else if(kind == "vt") {
-      std::array<double, 2> t;
-      words >> t[0] >> t[1];
-      obj.vt.push_back(t);
-    } else if(kind == "f") {
-      std::vector<std::array<std::size_t, 2>> corners;
-      std::string corner;
-      while(words >> corner) {
-        const std::size_t slash = corner.find('/');
-        corners.push_back({std::stoul(corner.substr(0, slash)), std::stoul(corner.substr(slash + 1))});
-      }
-      obj.f.push_back(corners);
-    } else {
-      obj.other.push_back(line);
-    }
-  }
-  return obj;
-}
-
-TEST_F(IoWriteObj, RoundTripOfARealMesh)
-{
-  const Mesh& mesh = diffuv_test::cgal_mesh("nefertiti.off");
-  // One chart: the uv of a corner is a function of its vertex.
-  auto uv_of = [&](vertex_descriptor v) {
-    const Point_3& p = mesh.point(v);
-    return Point_2(p.x() / 3 + 0.1, p.y() * p.z() + 1e-7);
-  };
-  Mesh copy = mesh;
-  auto corner_uv = copy.add_property_map<halfedge_descriptor, Point_2>("h:uv").first;
-  for(halfedge_descriptor h : halfedges(copy))
-    corner_uv[h] = uv_of(target(h, copy));
-
-  const std::string file = path("nefertiti.obj");
-  diffuv::write_obj(file, copy, copy.points(), corner_uv, "parameterization.mtl", "checker");
-  const Obj_file obj = parse_written_obj(file);
-
-  ASSERT_EQ(obj.v.size(), num_vertices(mesh));
-  EXPECT_EQ(obj.vt.size(), num_vertices(mesh)); // no seam: one vt per vertex
-  ASSERT_EQ(obj.f.size(), num_faces(mesh));
-  EXPECT_EQ(obj.other, (std::vector<std::string>{"mtllib parameterization.mtl", "usemtl checker"}));
-
-  std::size_t i = 0;
-  for(vertex_descriptor v : vertices(mesh)) {
-    const Point_3& p = mesh.point(v);
-    EXPECT_EQ(obj.v[i][0], p.x()); // 17 digits: exact
-    EXPECT_EQ(obj.v[i][1], p.y());
-    EXPECT_EQ(obj.v[i][2], p.z());
-    ++i;
-  }
-  std::size_t j = 0, wrong_vertices = 0, wrong_uv = 0;
-  for(face_descriptor f : faces(mesh)) {
-    const std::vector<std::size_t> expected = face_vertex_numbers(mesh, f);
-    const auto& corners = obj.f[j++];
-    ASSERT_EQ(corners.size(), 3u);
-    for(std::size_t c = 0; c < 3; ++c) {
-      if(corners[c][0] != expected[c] + 1)
-        ++wrong_vertices;
-      const Point_2 uv = uv_of(vertex_descriptor(static_cast<Mesh::size_type>(expected[c])));
-      const auto& t = obj.vt.at(corners[c][1] - 1);
-      if(std::abs(t[0] - uv.x()) > 1e-8 * std::max(1.0, std::abs(uv.x())) ||
-         std::abs(t[1] - uv.y()) > 1e-8 * std::max(1.0, std::abs(uv.y())))
-        ++wrong_uv;
-    }
-  }
-  EXPECT_EQ(wrong_vertices, 0u);
-  EXPECT_EQ(wrong_uv, 0u);
-}
-
-TEST_F(IoWriteObj, SeamVertexGetsTwoTextureCoordinates)
-{
-  // Two triangles 0-1-2 and 0-2-3 cut along their common edge 0-2 in uv.
-  Mesh mesh;
-  const vertex_descriptor a = mesh.add_vertex(Point_3(0, 0, 0)), b = mesh.add_vertex(Point_3(1, 0, 0)),
-                          c = mesh.add_vertex(Point_3(1, 1, 0)), d = mesh.add_vertex(Point_3(0, 1, 0));
-  const face_descriptor f1 = mesh.add_face(a, b, c), f2 = mesh.add_face(a, c, d);
-  auto corner_uv = mesh.add_property_map<halfedge_descriptor, Point_2>("h:uv").first;
-  for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f1, mesh), mesh)) {
-    const Point_3& p = mesh.point(target(h, mesh));
-    corner_uv[h] = Point_2(p.x(), p.y());
-  }
-  // In the second face, a moves in u only and c in v only: both must count.
-  for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f2, mesh), mesh)) {
-    const vertex_descriptor v = target(h, mesh);
-    const Point_3& p = mesh.point(v);
-    corner_uv[h] = Point_2(p.x() + (v == a ? 2 : 0), p.y() + (v == c ? 2 : 0));
-  }
-  const std::string file = path("seam.obj");
-  diffuv::write_obj(file, mesh, mesh.points(), corner_uv);
-  const Obj_file obj = parse_written_obj(file);
-  EXPECT_EQ(obj.v.size(), 4u);
-  EXPECT_EQ(obj.vt.size(), 6u); // a and c twice, b and d once
-  ASSERT_EQ(obj.f.size(), 2u);
-  EXPECT_TRUE(obj.other.empty());
-
-  // Each corner refers to its own vertex and to a vt holding that corner's uv.
-  std::size_t j = 0;
-  std::map<std::size_t, std::vector<std::size_t>> vts_of_vertex;
-  for(face_descriptor f : {f1, f2}) {
-    std::size_t c = 0;
-    for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, mesh), mesh)) {
-      const auto& corner = obj.f[j][c++];
-      EXPECT_EQ(corner[0], std::size_t(target(h, mesh)) + 1);
-      EXPECT_EQ(obj.vt.at(corner[1] - 1)[0], corner_uv[h].x());
-      EXPECT_EQ(obj.vt.at(corner[1] - 1)[1], corner_uv[h].y());
-      vts_of_vertex[corner[0]].push_back(corner[1]);
-    }
-    ++j;
-  }
-  EXPECT_NE(vts_of_vertex[1][0], vts_of_vertex[1][1]); // vertex a on the seam
-  EXPECT_NE(vts_of_vertex[3][0], vts_of_vertex[3][1]); // vertex c on the seam
-}
-
-TEST_F(IoWriteObj, MissingFolderThrows)
-{
-  const Mesh& mesh = diffuv_test::cgal_mesh("nefertiti.off");
-  Mesh copy = mesh;
-  auto corner_uv = copy.add_property_map<halfedge_descriptor, Point_2>("h:uv", Point_2(0, 0)).first;
-  const std::string file = path("missing/out.obj");
-  try {
-    diffuv::write_obj(file, copy, copy.points(), corner_uv);
-    ADD_FAILURE() << "no error";
-  } catch(const diffuv::Output_error& e) {
-    EXPECT_EQ(e.path(), file);
-    EXPECT_EQ(std::string(e.what()), file + ": cannot create the temporary file " + path("missing/.out.obj.tmp.") +
-                                         std::to_string(::getpid()) + " (No such file or directory)");
-  }
-  EXPECT_FALSE(fs::exists(path("missing")));
-}
-
-// ---------------------------------------------------------------------------
-// Atomic files and output folders
-
-std::string content_of(const std::string& file)
-{
-  std::ifstream in(file, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-TEST_F(IoAtomicFile, NotCommittedLeavesNothing)
-{
-  const std::string target = path("a.txt");
-  std::string temporary;
-  {
-    diffuv::Atomic_output_file file(target);
-    temporary = file.temporary_path();
-    EXPECT_EQ(temporary, path(".a.txt.tmp." + std::to_string(::getpid())));
-    file.stream() << "hello";
-    EXPECT_TRUE(fs::exists(temporary));
-    EXPECT_FALSE(fs::exists(target));
-  }
-  EXPECT_FALSE(fs::exists(target));
-  EXPECT_FALSE(fs::exists(temporary));
-  EXPECT_TRUE(fs::is_empty(dir_));
-}
-
-TEST_F(IoAtomicFile, CommitReplacesTheTarget)
-{
-  const std::string target = write("a.txt", "old");
-  {
-    diffuv::Atomic_output_file file(target);
-    file.stream() << "new content";
-    EXPECT_EQ(content_of(target), "old"); // untouched until the commit
-    file.commit();
-    EXPECT_FALSE(fs::exists(file.temporary_path()));
-  }
-  EXPECT_EQ(content_of(target), "new content");
-  EXPECT_EQ(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()), 1);
-}
-
-TEST_F(IoAtomicFile, FailedWriteKeepsTheOldFile)
-{
-  const std::string target = write("a.txt", "old");
-  diffuv::Atomic_output_file file(target);
-  file.stream() << "half";
-  file.stream().setstate(std::ios::badbit); // what a full disk does to the stream
-  try {
-    file.commit();
-    ADD_FAILURE() << "no error";
-  } catch(const diffuv::Output_error& e) {
-    EXPECT_EQ(std::string(e.what()), target + ": writing failed (disk full or I/O error)");
-  }
-  EXPECT_EQ(content_of(target), "old");
-  EXPECT_FALSE(fs::exists(file.temporary_path()));
-}
-
-// A full disk on the second file of a folder: neither file is replaced (the
-// first one, complete, must not be renamed before the second is known good).
-TEST_F(IoAtomicFile, AFailedFileLeavesTheWholeFolderAsItWas)
-{
-  const std::string a = write("a.txt", "old a");
-  const std::string b = write("b.txt", "old b");
-  {
-    diffuv::Output_folder folder(dir_.string());
-    folder.open("a.txt") << "new a";
-    std::ostream& second = folder.open("b.txt");
-    second << "half";
-    second.setstate(std::ios::badbit); // what a full disk does to the stream
-    try {
-      folder.commit();
-      ADD_FAILURE() << "no error";
-    } catch(const diffuv::Output_error& e) {
-      EXPECT_EQ(std::string(e.what()), b + ": writing failed (disk full or I/O error)");
-    }
-  }
-  EXPECT_EQ(content_of(a), "old a");
-  EXPECT_EQ(content_of(b), "old b");
-  EXPECT_EQ(std::distance(fs::directory_iterator(dir_), fs::directory_iterator()), 2); // no temporary left
-
-  // The same in a folder the run creates: the folder goes too.
-  const fs::path fresh = dir_ / "fresh";
-  {
-    diffuv::Output_folder folder(fresh.string());
-    folder.open("a.txt") << "new a";
-    folder.open("b.txt").setstate(std::ios::badbit);
-    EXPECT_THROW(folder.commit(), diffuv::Output_error);
-  }
-  EXPECT_FALSE(fs::exists(fresh));
-}
-
-TEST_F(IoAtomicFile, MissingFolderThrows)
-{
-  const std::string target = path("no/such/folder/a.txt");
-  EXPECT_THROW(diffuv::Atomic_output_file file(target), diffuv::Output_error);
-}
-
-TEST_F(IoAtomicFile, EnsureOutputDirectory)
-{
-  const std::string nested = path("x/y/z");
-  diffuv::ensure_output_directory(nested);
-  EXPECT_TRUE(fs::is_directory(nested));
-  EXPECT_TRUE(fs::is_empty(nested)); // the probe file is gone
-  diffuv::ensure_output_directory(nested); // existing: fine
-
-  const std::string file = write("plain.txt", "x");
-  try {
-    diffuv::ensure_output_directory(file);
-    ADD_FAILURE() << "no error";
-  } catch(const diffuv::Output_error& e) {
-    EXPECT_EQ(std::string(e.what()), file + ": exists and is not a directory");
-    EXPECT_EQ(e.path(), file);
-  }
-  try {
-    diffuv::ensure_output_directory(file + "/sub");
-    ADD_FAILURE() << "no error";
-  } catch(const diffuv::Output_error& e) {
-    EXPECT_EQ(std::string(e.what()), file + "/sub: cannot create the directory (Not a directory)");
-  }
-}
-
-TEST_F(IoAtomicFile, UnwritableDirectory)
-{
-  // /proc refuses new files even to root, unlike a folder without write bits.
-  if(!fs::is_directory("/proc"))
-    GTEST_SKIP() << "no /proc";
-  try {
-    diffuv::ensure_output_directory("/proc");
-    ADD_FAILURE() << "no error";
-  } catch(const diffuv::Output_error& e) {
-    EXPECT_EQ(std::string(e.what()), "/proc: the directory is not writable");
-  }
 }
 
 } // namespace

@@ -1,215 +1,47 @@
-// Tests of include/diffuv/io/labels.h: label files (every rejection with its
-// exact message and line), painted regions in OFF and PLY files (CGAL's
-// coloured meshes, MeshLab- and Blender-style headers, text and binary),
-// the per-vertex rule, labels carried to triangulated polygons, and the
-// labelled PLY round trip.
+// Tests of include/diffuv/io/painted_labels.h: painted regions in OFF and
+// PLY files (CGAL's coloured meshes, MeshLab- and Blender-style headers, text
+// and binary), every rejection with its exact message and line, and the
+// per-vertex rule.
 //
 // Expectations come from the files, read by eye and written here, or from
 // CGAL's readers where they read the same thing.
 #include "test_data.h"
 
-#include <diffuv/io/labels.h>
+#include <diffuv/core/color.h>
+#include <diffuv/io/painted_labels.h>
 #include <diffuv/io/read_mesh.h>
 
 #include <CGAL/IO/OFF.h>
-#include <CGAL/IO/PLY.h>
 
 #include <gtest/gtest.h>
 
-#include <unistd.h>
-
 #include <algorithm>
-#include <array>
 #include <cstdint>
 #include <cstring>
-#include <filesystem>
-#include <fstream>
-#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
 
 namespace {
 
-namespace fs = std::filesystem;
+using diffuv::Color;
 using diffuv::Label_source;
-using diffuv::Rgb;
 using diffuv_test::Mesh;
 using diffuv_test::Point_3;
-using face_descriptor = boost::graph_traits<Mesh>::face_descriptor;
-using vertex_descriptor = boost::graph_traits<Mesh>::vertex_descriptor;
 using Polygons = std::vector<std::vector<std::size_t>>;
 
-using LabelsTest = diffuv_test::Temp_dir_test;
-
-using LabelsFile = LabelsTest;
-using LabelsPainted = LabelsTest;
-using LabelsPaintedErrors = LabelsTest;
-using LabelsMesh = LabelsTest;
-using LabelsPly = LabelsTest;
-
-template <class F>
-diffuv::Input_error input_error(F f)
-{
-  try {
-    f();
-  } catch(const diffuv::Input_error& e) {
-    return e;
-  }
-  ADD_FAILURE() << "no Input_error";
-  return diffuv::Input_error("", 0, "no error");
-}
-
-template <class E, class F>
-std::string error_text(F f)
-{
-  try {
-    f();
-  } catch(const E& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "no exception";
-  return std::string();
-}
-
-diffuv::Input_error label_file_error(const std::string& file, std::size_t expected)
-{
-  return input_error([&] { diffuv::read_face_labels(file, expected); });
-}
+using LabelsPainted = diffuv_test::Temp_dir_test;
+using LabelsPaintedErrors = diffuv_test::Temp_dir_test;
 
 diffuv::Input_error painted_error(const std::string& file, const std::string& property = std::string())
 {
-  return input_error([&] { diffuv::read_painted_labels(file, property); });
-}
-
-// CGAL's PLY reader with face colours. A pitfall: CGAL 5.5 compiles it only
-// when vertex colours are asked for too, into the same iterator type.
-bool cgal_read_ply(const std::string& file, std::vector<Point_3>& points, Polygons& polygons,
-                   std::vector<CGAL::IO::Color>& face_colors, bool binary = true)
-{
-  std::vector<CGAL::IO::Color> vertex_colors;
-  return CGAL::IO::read_PLY(file, points, polygons,
-                            CGAL::parameters::face_color_output_iterator(std::back_inserter(face_colors))
-                              .vertex_color_output_iterator(std::back_inserter(vertex_colors))
-                              .use_binary_mode(binary)
-                              .verbose(false));
-}
-
-// The vertex numbers of face f.
-std::vector<std::size_t> corners(const Mesh& mesh, face_descriptor f)
-{
-  std::vector<std::size_t> numbers;
-  for(vertex_descriptor v : CGAL::vertices_around_face(halfedge(f, mesh), mesh))
-    numbers.push_back(std::size_t(v));
-  return numbers;
-}
-
-// The polygons of an OFF file as CGAL's data files write it.
-Polygons parse_off_polygons(const std::string& file)
-{
-  std::ifstream in(file);
-  std::string keyword;
-  std::size_t nv = 0, nf = 0, ne = 0;
-  in >> keyword >> nv >> nf >> ne;
-  double x;
-  for(std::size_t i = 0; i < 3 * nv; ++i)
-    in >> x;
-  Polygons polygons(nf);
-  for(auto& p : polygons) {
-    std::size_t k = 0;
-    in >> k;
-    p.resize(k);
-    for(std::size_t& i : p)
-      in >> i;
-  }
-  EXPECT_TRUE(in) << file;
-  return polygons;
-}
-
-// ---------------------------------------------------------------------------
-// Label files
-
-TEST_F(LabelsFile, AnyLayoutWithComments)
-{
-  const std::string file = write("l.txt", "# regions of the cow\n3\n0 1\r\n\n   7   # the head\n2147483647\n#end");
-  EXPECT_EQ(diffuv::read_face_labels(file, 5), (std::vector<int>{3, 0, 1, 7, 2147483647}));
-  EXPECT_TRUE(diffuv::read_face_labels(write("empty.txt", "# nothing\n"), 0).empty());
-}
-
-TEST_F(LabelsFile, Errors)
-{
-  diffuv::Input_error e = label_file_error(path("missing.txt"), 1);
-  EXPECT_EQ(e.reason(), "cannot open file");
-  EXPECT_EQ(e.line(), 0u);
-  EXPECT_EQ(label_file_error(dir_.string(), 1).reason(), "cannot open file");
-
-  e = label_file_error(write("a.txt", "1\n2\n# three\n3 abc\n"), 5);
-  EXPECT_EQ(e.reason(), "\"abc\" is not an integer label");
-  EXPECT_EQ(e.line(), 4u);
-  EXPECT_EQ(label_file_error(write("b.txt", "1.5\n"), 1).reason(), "\"1.5\" is not an integer label");
-  EXPECT_EQ(label_file_error(write("c.txt", "+3\n"), 1).reason(), "\"+3\" is not an integer label");
-  EXPECT_EQ(label_file_error(write("d.txt", "0x10\n"), 1).reason(), "\"0x10\" is not an integer label");
-
-  e = label_file_error(write("e.txt", "0\n2147483648\n"), 2);
-  EXPECT_EQ(e.reason(), "label 2147483648 is out of range");
-  EXPECT_EQ(e.line(), 2u);
-  EXPECT_EQ(label_file_error(write("f.txt", "-2147483649\n"), 1).reason(), "label -2147483649 is out of range");
-  EXPECT_EQ(label_file_error(write("g.txt", "99999999999999999999\n"), 1).reason(),
-            "label 99999999999999999999 is out of range");
-
-  e = label_file_error(write("h.txt", "0\n1\n2\n3\n4\n5\n-3\n"), 7);
-  EXPECT_EQ(e.reason(), "label -3 is negative; labels are non-negative integers");
-  EXPECT_EQ(e.line(), 7u);
-  EXPECT_EQ(std::string(e.what()), path("h.txt") + ":7: label -3 is negative; labels are non-negative integers");
-
-  // Bytes that would cut or garble the one-line message are spelled out.
-  e = label_file_error(write("i.txt", std::string("0\n1\x01\0z\n", 7)), 2);
-  EXPECT_EQ(e.reason(), "\"1\\x01\\x00z\" is not an integer label");
-  EXPECT_EQ(e.line(), 2u);
-  // A UTF-8 byte-order mark (Windows editors) is not part of the first label.
-  EXPECT_EQ(diffuv::read_face_labels(write("bom.txt", "\xEF\xBB\xBF" "4\n2\n"), 2), (std::vector<int>{4, 2}));
-
-  e = label_file_error(write("i.txt", "0\n1\n2\n"), 4);
-  EXPECT_EQ(e.reason(), "the file has 3 labels, the mesh has 4 faces");
-  EXPECT_EQ(e.line(), 0u);
-  EXPECT_EQ(label_file_error(write("j.txt", "0\n"), 2).reason(), "the file has 1 label, the mesh has 2 faces");
-  EXPECT_EQ(label_file_error(write("k.txt", "0 0\n"), 1).reason(), "the file has 2 labels, the mesh has 1 face");
-}
-
-TEST_F(LabelsFile, WriteThenRead)
-{
-  const std::vector<int> labels = {0, 5, 2147483647, 3, 3};
-  diffuv::write_face_labels(path("out.txt"), labels);
-  std::ifstream in(path("out.txt"));
-  std::stringstream text;
-  text << in.rdbuf();
-  EXPECT_EQ(text.str(), "0\n5\n2147483647\n3\n3\n");
-  EXPECT_EQ(diffuv::read_face_labels(path("out.txt"), labels.size()), labels);
-
-  EXPECT_EQ(error_text<diffuv::Output_error>([&] { diffuv::write_face_labels(path("neg.txt"), {1, -1}); }),
-            path("neg.txt") + ": face 1 has label -1; labels are non-negative integers");
-  EXPECT_FALSE(fs::exists(path("neg.txt")));
-}
-
-// ---------------------------------------------------------------------------
-// Palette
-
-TEST(LabelsPalette, WellSeparatedThenDistinct)
-{
-  EXPECT_EQ(diffuv::label_color(0), (Rgb{31, 119, 180}));
-  EXPECT_EQ(diffuv::label_color(3), (Rgb{214, 39, 40}));
-  EXPECT_EQ(diffuv::label_color(19), (Rgb{158, 218, 229}));
-  std::set<Rgb> seen;
-  const int n = 1 << 17;
-  for(int label = 0; label < n; ++label)
-    seen.insert(diffuv::label_color(label));
-  EXPECT_EQ(seen.size(), std::size_t(n));
+  return diffuv_test::input_error([&] { diffuv::read_painted_labels(file, property); });
 }
 
 // ---------------------------------------------------------------------------
 // Painted regions in CGAL's coloured meshes
 
-TEST_F(LabelsPainted, ColoredTetraPlyFaceColours)
+TEST_F(LabelsPainted, ColoredTetraPlyFaceColors)
 {
   // The faces of colored_tetra.ply (red green blue, then an int label):
   //   3 0 1 2 255 0 0 -1 / 3 0 3 1 0 255 0 1 / 3 1 3 2 0 0 255 -1 / 3 0 2 3 255 0 255 0
@@ -221,16 +53,16 @@ TEST_F(LabelsPainted, ColoredTetraPlyFaceColours)
   EXPECT_EQ(p.source, Label_source::face_colors);
   EXPECT_EQ(p.property, "red/green/blue");
   EXPECT_EQ(p.polygon_labels, (std::vector<int>{2, 1, 0, 3}));
-  EXPECT_EQ(p.colors, (std::vector<Rgb>{{0, 0, 255}, {0, 255, 0}, {255, 0, 0}, {255, 0, 255}}));
+  EXPECT_EQ(p.colors, (std::vector<Color>{{0, 0, 255}, {0, 255, 0}, {255, 0, 0}, {255, 0, 255}}));
 
   // CGAL's reader gives the same colours, face by face.
   std::vector<Point_3> points;
   Polygons polygons;
   std::vector<CGAL::IO::Color> colors;
-  ASSERT_TRUE(cgal_read_ply(file, points, polygons, colors));
+  ASSERT_TRUE(diffuv_test::cgal_read_ply(file, points, polygons, colors));
   ASSERT_EQ(colors.size(), p.polygon_labels.size());
   for(std::size_t j = 0; j < colors.size(); ++j)
-    EXPECT_EQ(p.colors[p.polygon_labels[j]], (Rgb{colors[j].r(), colors[j].g(), colors[j].b()})) << j;
+    EXPECT_EQ(p.colors[p.polygon_labels[j]], (Color{colors[j].r(), colors[j].g(), colors[j].b()})) << j;
 
   // Asked for, the label property is read, and its -1 is an error.
   const diffuv::Input_error e = painted_error(file, "label");
@@ -249,7 +81,7 @@ TEST_F(LabelsPainted, MeshWithColorsOff)
   EXPECT_EQ(p.source, Label_source::face_colors);
   EXPECT_EQ(p.property, "rgb");
   EXPECT_EQ(p.polygon_labels, (std::vector<int>{1, 1, 1, 0}));
-  EXPECT_EQ(p.colors, (std::vector<Rgb>{{0, 0, 230}, {230, 0, 0}}));
+  EXPECT_EQ(p.colors, (std::vector<Color>{{0, 0, 230}, {230, 0, 0}}));
 
   // CGAL reads the same regions, but truncates 0.9 * 255 to 229.
   std::vector<Point_3> points;
@@ -267,7 +99,7 @@ TEST_F(LabelsPainted, MeshWithColorsOff)
 
 const std::string square_points = "0 0 0\n1 0 0\n1 1 0\n0 1 0\n";
 
-TEST_F(LabelsPainted, OffFaceColoursWithoutC)
+TEST_F(LabelsPainted, OffFaceColorsWithoutC)
 {
   // MeshLab writes face colours (integers and alpha) under a plain "OFF".
   const std::string file =
@@ -275,7 +107,7 @@ TEST_F(LabelsPainted, OffFaceColoursWithoutC)
   const diffuv::Painted_labels p = diffuv::read_painted_labels(file);
   EXPECT_EQ(p.source, Label_source::face_colors);
   EXPECT_EQ(p.polygon_labels, (std::vector<int>{1, 0}));
-  EXPECT_EQ(p.colors, (std::vector<Rgb>{{20, 20, 200}, {200, 10, 10}}));
+  EXPECT_EQ(p.colors, (std::vector<Color>{{20, 20, 200}, {200, 10, 10}}));
 
   // A pitfall: CGAL's reader reads face colours only after a "COFF" header.
   std::vector<Point_3> points;
@@ -286,7 +118,7 @@ TEST_F(LabelsPainted, OffFaceColoursWithoutC)
   EXPECT_TRUE(colors.empty());
 }
 
-TEST_F(LabelsPainted, CoffVertexColours)
+TEST_F(LabelsPainted, CoffVertexColors)
 {
   // Vertex colours (floats with alpha) and none on the faces: vertex labels
   // red = 1, blue = 0 (blue sorts first): 1 1 0 0. Face 0 (1, 1, 0) -> 1,
@@ -297,7 +129,7 @@ TEST_F(LabelsPainted, CoffVertexColours)
   EXPECT_EQ(p.source, Label_source::vertex_colors);
   EXPECT_EQ(p.property, "rgb");
   EXPECT_EQ(p.polygon_labels, (std::vector<int>{1, 0}));
-  EXPECT_EQ(p.colors, (std::vector<Rgb>{{0, 0, 255}, {255, 0, 0}}));
+  EXPECT_EQ(p.colors, (std::vector<Color>{{0, 0, 255}, {255, 0, 0}}));
 
   // Without colours, and for OBJ and STL: none.
   const std::string plain = write("plain.off", "OFF\n4 2 0\n" + square_points + "3 0 1 2\n3 0 2 3\n");
@@ -383,7 +215,7 @@ std::string meshlab_ply(bool big)
   return b.s;
 }
 
-TEST_F(LabelsPainted, MeshLabBinaryPlyFaceColours)
+TEST_F(LabelsPainted, MeshLabBinaryPlyFaceColors)
 {
   for(bool big : {false, true}) {
     const std::string file = write("m.ply", meshlab_ply(big));
@@ -391,7 +223,7 @@ TEST_F(LabelsPainted, MeshLabBinaryPlyFaceColours)
     EXPECT_EQ(p.source, Label_source::face_colors) << big;
     EXPECT_EQ(p.property, "red/green/blue");
     EXPECT_EQ(p.polygon_labels, (std::vector<int>{1, 0})) << big;
-    EXPECT_EQ(p.colors, (std::vector<Rgb>{{10, 200, 29}, {10, 200, 30}})) << big;
+    EXPECT_EQ(p.colors, (std::vector<Color>{{10, 200, 29}, {10, 200, 30}})) << big;
     Mesh mesh; // the mesh reader reads the same file
     EXPECT_EQ(diffuv::read_triangle_mesh(file, mesh).faces_in_file, 2u);
   }
@@ -439,7 +271,7 @@ std::string blender_ply(int format)
   return b.s + text.str();
 }
 
-TEST_F(LabelsPainted, BlenderPlyVertexColours)
+TEST_F(LabelsPainted, BlenderPlyVertexColors)
 {
   // Vertex labels by colour: blue (0,0,255) = 0, red = 1: 1 1 0 1 0.
   // Quad (1, 1, 0, 1) -> 1; triangle 1 4 2 (1, 0, 0) -> 0.
@@ -448,7 +280,7 @@ TEST_F(LabelsPainted, BlenderPlyVertexColours)
     EXPECT_EQ(p.source, Label_source::vertex_colors) << format;
     EXPECT_EQ(p.property, "red/green/blue");
     EXPECT_EQ(p.polygon_labels, (std::vector<int>{1, 0})) << format;
-    EXPECT_EQ(p.colors, (std::vector<Rgb>{{0, 0, 255}, {255, 0, 0}})) << format;
+    EXPECT_EQ(p.colors, (std::vector<Color>{{0, 0, 255}, {255, 0, 0}})) << format;
   }
 }
 
@@ -510,7 +342,7 @@ TEST_F(LabelsPainted, IntegerProperties)
   EXPECT_EQ(painted_error(f, "label").reason(), "the file has no face or vertex property \"label\"");
 }
 
-TEST_F(LabelsPainted, VertexPropertyBeforeVertexColours)
+TEST_F(LabelsPainted, VertexPropertyBeforeVertexColors)
 {
   const std::string values[4] = {"0 255 0 0", "0 255 0 0", "3 0 0 255", "3 0 0 255"}, none[2];
   const std::string properties = "int label\nproperty uint8 Red\nproperty uint8 green\nproperty uint8 blue";
@@ -530,8 +362,8 @@ TEST_F(LabelsPaintedErrors, Ply)
   EXPECT_EQ(e.line(), 16u);
   EXPECT_EQ(painted_error(write("b.ply", property_ply("", none, "uint segment", huge))).reason(),
             "face 1 has label 4294967295 (property \"segment\"), out of range");
-  const std::string colours[4] = {"255 0 0", "255 0 0", "0 0 1.5", "0 0 255"};
-  e = painted_error(write("c.ply", property_ply("float red\nproperty float green\nproperty float blue", colours, "",
+  const std::string colors[4] = {"255 0 0", "255 0 0", "0 0 1.5", "0 0 255"};
+  e = painted_error(write("c.ply", property_ply("float red\nproperty float green\nproperty float blue", colors, "",
                                                 none)));
   EXPECT_EQ(e.reason(), "vertex 0 has colour component 255, outside [0, 1]");
   EXPECT_EQ(e.line(), 13u);
@@ -579,174 +411,13 @@ TEST(LabelsVertexRule, MajorityThenSmallest)
       EXPECT_EQ(diffuv::vertex_labels_to_polygons(vertex_labels, Polygons{p}), std::vector<int>{expected[j]});
     while(std::next_permutation(p.begin(), p.end()));
   }
-  EXPECT_EQ(error_text<diffuv::Error>([&] { diffuv::vertex_labels_to_polygons(vertex_labels, Polygons{{0, 6, 1}}); }),
+  EXPECT_EQ(diffuv_test::error_text<diffuv::Error>([&] { diffuv::vertex_labels_to_polygons(vertex_labels, Polygons{{0, 6, 1}}); }),
             "polygon 0 has vertex index 6, but there are 6 vertex labels");
   const std::vector<std::vector<int>> signed_polygons = {{0, 1, 2}, {-1}};
-  EXPECT_EQ(error_text<diffuv::Error>([&] { diffuv::vertex_labels_to_polygons(vertex_labels, signed_polygons); }),
+  EXPECT_EQ(diffuv_test::error_text<diffuv::Error>([&] { diffuv::vertex_labels_to_polygons(vertex_labels, signed_polygons); }),
             "polygon 1 has vertex index -1, but there are 6 vertex labels");
-  EXPECT_EQ(error_text<diffuv::Error>([&] { diffuv::vertex_labels_to_polygons(vertex_labels, Polygons{{}}); }),
+  EXPECT_EQ(diffuv_test::error_text<diffuv::Error>([&] { diffuv::vertex_labels_to_polygons(vertex_labels, Polygons{{}}); }),
             "polygon 0 has no vertex");
-}
-
-// ---------------------------------------------------------------------------
-// Labels of the polygons of a file -> labels of the triangles of the mesh
-
-// Checks that each face of the mesh read from `file` gets the label of the
-// only polygon of the file that has its three corners.
-void expect_triangles_take_their_polygon_label(const std::string& file, const Polygons& polygons)
-{
-  std::vector<int> polygon_labels(polygons.size());
-  for(std::size_t j = 0; j < polygons.size(); ++j)
-    polygon_labels[j] = static_cast<int>((7 * j + 3) % 11);
-  Mesh mesh;
-  const diffuv::Mesh_read_report report = diffuv::read_triangle_mesh(file, mesh);
-  const std::vector<int> labels = diffuv::face_labels_of_mesh(polygon_labels, report);
-  ASSERT_EQ(labels.size(), num_faces(mesh)) << file;
-  std::size_t f = 0;
-  std::vector<std::size_t> triangles(polygons.size(), 0);
-  for(face_descriptor face : faces(mesh)) {
-    std::vector<std::size_t> owners;
-    for(std::size_t j = 0; j < polygons.size(); ++j) {
-      const auto& p = polygons[j];
-      const auto c = corners(mesh, face);
-      if(std::all_of(c.begin(), c.end(), [&](std::size_t v) { return std::find(p.begin(), p.end(), v) != p.end(); }))
-        owners.push_back(j);
-    }
-    ASSERT_EQ(owners.size(), 1u) << file << " face " << f;
-    ++triangles[owners[0]];
-    EXPECT_EQ(labels[f++], polygon_labels[owners[0]]) << file << " face " << f - 1;
-  }
-  for(std::size_t j = 0; j < polygons.size(); ++j)
-    EXPECT_EQ(triangles[j], polygons[j].size() - 2) << file << " polygon " << j;
-}
-
-TEST_F(LabelsMesh, TrianglesOfAQuadTakeItsLabel)
-{
-  for(const char* name : {"meshes/cube_quad.off", "meshes/torus_quad.off"}) {
-    const std::string file = diffuv_test::data_path(name);
-    expect_triangles_take_their_polygon_label(file, parse_off_polygons(file));
-  }
-  // Quads, a pentagon (triangulated by CGAL's CDT) and a triangle.
-  const std::string file = write("q.off", "OFF\n9 4 0\n0 0 0\n1 0 0\n2 0 0\n0 1 0\n1 1 0\n2 1 0\n0 2 0\n"
-                                          "2 2 0.1\n3 0 0\n4 0 1 4 3\n4 1 2 5 4\n5 3 4 5 7 6\n3 2 8 5\n");
-  expect_triangles_take_their_polygon_label(file, parse_off_polygons(file));
-}
-
-TEST_F(LabelsMesh, Errors)
-{
-  Mesh mesh;
-  diffuv::Mesh_read_report report =
-    diffuv::read_triangle_mesh(write("q.off", "OFF\n4 1 0\n" + square_points + "4 0 1 2 3\n"), mesh);
-  EXPECT_EQ(diffuv::face_labels_of_mesh({8}, report), (std::vector<int>{8, 8}));
-  EXPECT_EQ(error_text<diffuv::Error>([&] { diffuv::face_labels_of_mesh({1, 2}, report); }),
-            "there are 2 polygon labels, the mesh file has 1 face");
-  report.file_face.clear();
-  EXPECT_EQ(error_text<diffuv::Error>([&] { diffuv::face_labels_of_mesh({1}, report); }),
-            "the mesh read report has no face provenance (file_face)");
-}
-
-// ---------------------------------------------------------------------------
-// Labelled PLY: write, then read back
-
-TEST_F(LabelsPly, RoundTripOfARealMesh)
-{
-  Mesh mesh;
-  const diffuv::Mesh_read_report report =
-    diffuv::read_triangle_mesh(diffuv_test::data_path("meshes/nefertiti.off"), mesh);
-  std::vector<int> labels(report.faces);
-  for(std::size_t f = 0; f < labels.size(); ++f) // gaps, and labels past the palette
-    labels[f] = static_cast<int>((f / 37) % 9 * 5 + (f % 5 == 0 ? 1000000 : 0));
-
-  for(bool binary : {false, true}) {
-    const std::string file = path(binary ? "binary.ply" : "text.ply");
-    diffuv::Labelled_ply_options options;
-    options.binary = binary;
-    diffuv::write_labelled_ply(file, mesh, get(CGAL::vertex_point, mesh), labels, options);
-
-    const diffuv::Painted_labels p = diffuv::read_painted_labels(file);
-    EXPECT_EQ(p.source, Label_source::face_property) << binary;
-    EXPECT_EQ(p.property, "label");
-    EXPECT_EQ(p.polygon_labels, labels) << binary;
-
-    // CGAL's reader: the same points in the same order, the same faces, and
-    // each face in the colour of its label.
-    std::vector<Point_3> points;
-    Polygons polygons;
-    std::vector<CGAL::IO::Color> colors;
-    ASSERT_TRUE(cgal_read_ply(file, points, polygons, colors, binary));
-    ASSERT_EQ(points.size(), num_vertices(mesh));
-    ASSERT_EQ(polygons.size(), num_faces(mesh));
-    ASSERT_EQ(colors.size(), num_faces(mesh));
-    std::size_t i = 0, wrong_points = 0;
-    for(vertex_descriptor v : vertices(mesh))
-      wrong_points += points[i++] != mesh.point(v);
-    EXPECT_EQ(wrong_points, 0u);
-    std::size_t j = 0, wrong_faces = 0, wrong_colours = 0;
-    for(face_descriptor f : faces(mesh)) {
-      wrong_faces += polygons[j] != corners(mesh, f);
-      const Rgb expected = diffuv::label_color(labels[j]);
-      wrong_colours += Rgb{colors[j].r(), colors[j].g(), colors[j].b()} != expected;
-      ++j;
-    }
-    EXPECT_EQ(wrong_faces, 0u);
-    EXPECT_EQ(wrong_colours, 0u);
-  }
-}
-
-TEST_F(LabelsPly, RepaintedOrSharedColoursAreReadAsColours)
-{
-  const Mesh grid = diffuv_test::make_grid(2, 2); // 8 triangles
-  const std::vector<int> labels = {0, 0, 1, 1, 2, 2, 3, 3};
-  const std::string file = path("g.ply");
-  diffuv::write_labelled_ply(file, grid, get(CGAL::vertex_point, grid), labels);
-
-  // Repaint the last face in the colour of label 0 (MeshLab keeps the stale
-  // label property): the colours win, ranked (r, g, b).
-  std::ifstream in(file);
-  std::vector<std::string> lines;
-  for(std::string line; std::getline(in, line);)
-    lines.push_back(line);
-  in.close();
-  const Rgb c0 = diffuv::label_color(0);
-  std::istringstream last(lines.back()); // "3 i j k r g b label"
-  std::string count, i, j, k;
-  last >> count >> i >> j >> k;
-  lines.back() = count + " " + i + " " + j + " " + k + " " + std::to_string(c0[0]) + " " + std::to_string(c0[1]) +
-                 " " + std::to_string(c0[2]) + " 3";
-  std::string text;
-  for(const std::string& line : lines)
-    text += line + "\n";
-  const diffuv::Painted_labels p = diffuv::read_painted_labels(write("g2.ply", text));
-  EXPECT_EQ(p.source, Label_source::face_colors);
-  // Colours of labels 0-3: (31,119,180) (255,127,14) (44,160,44) (214,39,40).
-  EXPECT_EQ(p.polygon_labels, (std::vector<int>{0, 0, 3, 3, 1, 1, 2, 0}));
-
-  // Colours given by the caller, shared by two labels: read back as colours.
-  diffuv::Labelled_ply_options options;
-  options.colors = {{9, 9, 9}, {9, 9, 9}, {1, 2, 3}, {200, 0, 0}};
-  diffuv::write_labelled_ply(file, grid, get(CGAL::vertex_point, grid), labels, options);
-  const diffuv::Painted_labels shared = diffuv::read_painted_labels(file);
-  EXPECT_EQ(shared.source, Label_source::face_colors);
-  EXPECT_EQ(shared.polygon_labels, (std::vector<int>{1, 1, 1, 1, 0, 0, 2, 2}));
-}
-
-TEST_F(LabelsPly, WriteErrorsWriteNothing)
-{
-  const Mesh grid = diffuv_test::make_grid(2, 2);
-  const auto vpm = get(CGAL::vertex_point, grid);
-  const std::string file = path("g.ply");
-  EXPECT_EQ(error_text<diffuv::Output_error>([&] { diffuv::write_labelled_ply(file, grid, vpm, {0, 0}); }),
-            file + ": 2 face labels for a mesh of 8 faces");
-  EXPECT_EQ(error_text<diffuv::Output_error>(
-              [&] { diffuv::write_labelled_ply(file, grid, vpm, {0, 0, 0, 0, 0, 0, -2, 0}); }),
-            file + ": face 6 has label -2; labels are non-negative integers");
-  diffuv::Labelled_ply_options options;
-  options.colors = {{1, 1, 1}, {2, 2, 2}, {3, 3, 3}};
-  EXPECT_EQ(error_text<diffuv::Output_error>(
-              [&] { diffuv::write_labelled_ply(file, grid, vpm, {0, 1, 2, 0, 1, 2, 3, 0}, options); }),
-            file + ": face 6 has label 3, but only 3 colours are given");
-  EXPECT_FALSE(fs::exists(file));
-  EXPECT_TRUE(fs::is_empty(dir_));
 }
 
 } // namespace
