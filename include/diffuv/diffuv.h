@@ -50,6 +50,8 @@
 #include <diffuv/layout/disc_patches.h>
 #include <diffuv/layout/fan_split.h>
 #include <diffuv/layout/quad_layout.h>
+#include <diffuv/layout/quad_layout_options.h>
+#include <diffuv/layout/quads_from_cells.h>
 #include <diffuv/layout/sub_patches.h>
 #include <diffuv/layout/voronoi_cells.h>
 
