@@ -9,6 +9,7 @@
 #include <diffuv/correspondence/transfer.h>
 #include <diffuv/layout/disc_patches.h>
 #include <diffuv/layout/sub_patches.h>
+#include <diffuv/patches/patches_from_labels.h>
 
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polygon_mesh_processing/remesh.h>

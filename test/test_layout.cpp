@@ -6,14 +6,16 @@
 #include "test_data.h"
 
 #include <diffuv/io/read_obj_charts.h>
+#include <diffuv/layout/disc_patches.h>
+#include <diffuv/layout/fan_split.h>
+#include <diffuv/layout/quad_layout.h>
 #include <diffuv/metrics/distortion.h>
 #include <diffuv/parameterization/layout_judge.h>
 #include <diffuv/parameterization/parameterize_disc.h>
 #include <diffuv/parameterization/parameterize_patches.h>
-#include <diffuv/layout/disc_patches.h>
-#include <diffuv/layout/fan_split.h>
 #include <diffuv/patches/flat_triangles.h>
-#include <diffuv/layout/quad_layout.h>
+#include <diffuv/patches/merge_small_patches.h>
+#include <diffuv/patches/patches_from_labels.h>
 #include <diffuv/patches/region_sides.h>
 
 #include <algorithm>

@@ -2,13 +2,18 @@
 // (small pieces, non-disc regions, caps), automatic patches.
 #include "test_data.h"
 
+#include <diffuv/graph/patch_graph.h>
+#include <diffuv/layout/disc_patches.h>
+#include <diffuv/layout/voronoi_discs.h>
 #include <diffuv/parameterization/parameterize_disc.h>
 #include <diffuv/parameterization/parameterize_patches.h>
-#include <diffuv/layout/disc_patches.h>
 #include <diffuv/patches/flat_triangles.h>
-#include <diffuv/graph/patch_graph.h>
+#include <diffuv/patches/merge_small_patches.h>
+#include <diffuv/patches/patches_from_labels.h>
 #include <diffuv/patches/region_sides.h>
-#include <diffuv/patches/split_patches.h>
+#include <diffuv/patches/smooth_region_borders.h>
+#include <diffuv/patches/split_at_junctions.h>
+#include <diffuv/patches/split_cap.h>
 
 #include <CGAL/boost/graph/Face_filtered_graph.h>
 

@@ -3,9 +3,11 @@
 #include "test_data.h"
 
 #include <diffuv/atlas/Uv_atlas.h>
+#include <diffuv/layout/disc_patches.h>
 #include <diffuv/metrics/distortion.h>
 #include <diffuv/parameterization/parameterize_patches.h>
-#include <diffuv/layout/disc_patches.h>
+#include <diffuv/patches/merge_small_patches.h>
+#include <diffuv/patches/patches_from_labels.h>
 
 #include <string>
 #include <vector>

@@ -39,14 +39,18 @@
 #include <diffuv/graph/multi_source_dijkstra.h>
 #include <diffuv/graph/patch_graph.h>
 
-#include <diffuv/patches/clean_labels.h>
 #include <diffuv/patches/corners.h>
 #include <diffuv/patches/disc_topology.h>
 #include <diffuv/patches/flat_triangles.h>
+#include <diffuv/patches/merge_small_patches.h>
+#include <diffuv/patches/patches_from_labels.h>
 #include <diffuv/patches/region_sides.h>
 #include <diffuv/patches/segmentation.h>
-#include <diffuv/patches/split_patches.h>
+#include <diffuv/patches/smooth_region_borders.h>
+#include <diffuv/patches/split_at_junctions.h>
+#include <diffuv/patches/split_cap.h>
 
+#include <diffuv/layout/cut_into_discs.h>
 #include <diffuv/layout/disc_patches.h>
 #include <diffuv/layout/fan_split.h>
 #include <diffuv/layout/quad_layout.h>
@@ -54,6 +58,7 @@
 #include <diffuv/layout/quads_from_cells.h>
 #include <diffuv/layout/sub_patches.h>
 #include <diffuv/layout/voronoi_cells.h>
+#include <diffuv/layout/voronoi_discs.h>
 
 #include <diffuv/atlas/Uv_atlas.h>
 
@@ -68,6 +73,7 @@
 
 #include <diffuv/cgal/Diffusion_parameterizer_3.h>
 
+#include <diffuv/correspondence/clean_labels.h>
 #include <diffuv/correspondence/correspondence.h>
 #include <diffuv/correspondence/labelled_atlas.h>
 #include <diffuv/correspondence/nearest_face_labels.h>

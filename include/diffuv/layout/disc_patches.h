@@ -3,11 +3,15 @@
 #define DIFFUV_LAYOUT_DISC_PATCHES_H
 
 #include <diffuv/core/error.h>
+#include <diffuv/layout/cut_into_discs.h>
+#include <diffuv/layout/quad_layout.h>
+#include <diffuv/layout/voronoi_discs.h>
 #include <diffuv/patches/disc_topology.h>
 #include <diffuv/patches/flat_triangles.h>
-#include <diffuv/layout/quad_layout.h>
+#include <diffuv/patches/merge_small_patches.h>
+#include <diffuv/patches/patches_from_labels.h>
 #include <diffuv/patches/segmentation.h>
-#include <diffuv/patches/split_patches.h>
+#include <diffuv/patches/split_cap.h>
 
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 

@@ -30,6 +30,7 @@
 #include <diffuv/layout/quad_layout_options.h>
 #include <diffuv/layout/quads_from_cells.h>
 #include <diffuv/layout/voronoi_cells.h>
+#include <diffuv/patches/patches_from_labels.h>
 #include <diffuv/patches/segmentation.h>
 
 #include <CGAL/boost/graph/iterator.h>

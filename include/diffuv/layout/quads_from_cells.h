@@ -22,8 +22,9 @@
 #include <diffuv/layout/internal/dual_regions.h>
 #include <diffuv/layout/internal/frame_cell.h>
 #include <diffuv/layout/quad_layout_options.h>
+#include <diffuv/patches/patches_from_labels.h>
 #include <diffuv/patches/segmentation.h>
-#include <diffuv/patches/split_patches.h>
+#include <diffuv/patches/split_at_junctions.h>
 
 #include <CGAL/Polygon_mesh_processing/measure.h>
 

@@ -43,8 +43,8 @@ struct Sub_patch_options {
   /// Runs shorter than this share of the region's perimeter do not count:
   /// where four regions meet at one vertex on one mesh, another tessellation
   /// of the same labels has two junctions with a run of an edge or two
-  /// between them (measured: on man's remeshed copy, 120 of its four-run
-  /// regions had a fifth run), and the two meshes must count alike. The
+  /// between them (doc/correspondence.md, measured on man's remeshed copy),
+  /// and the two meshes must count alike. The
   /// sector's corner is then the vertex halfway along such runs.
   double min_run_fraction = 0.1;
 };

@@ -10,7 +10,9 @@
 #define DIFFUV_LAYOUT_VORONOI_CELLS_H
 
 #include <diffuv/graph/multi_source_dijkstra.h>
+#include <diffuv/layout/voronoi_discs.h>
 #include <diffuv/patches/segmentation.h>
+#include <diffuv/patches/smooth_region_borders.h>
 
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>

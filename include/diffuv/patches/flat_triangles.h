@@ -2,7 +2,7 @@
 // a neighbouring patch.
 //
 // A face whose three vertices lie on one side of its patch is flat in any map
-// that sends that side onto a straight edge of the square (issue #5).
+// that sends that side onto a straight edge of the square.
 // `region_sides()` first tries to move a corner onto the face's middle vertex
 // (`separate_flat_triangles()`); where that would leave another face flat
 // (a junction face between two runs that the side merges, measured on man),

@@ -13,6 +13,7 @@
 #include <diffuv/layout/internal/cell_complex.h>
 #include <diffuv/layout/internal/cell_fans.h>
 #include <diffuv/layout/quad_layout_options.h>
+#include <diffuv/patches/patches_from_labels.h>
 #include <diffuv/patches/segmentation.h>
 
 #include <boost/graph/graph_traits.hpp>

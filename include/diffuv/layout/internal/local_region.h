@@ -7,6 +7,8 @@
 #define DIFFUV_LAYOUT_INTERNAL_LOCAL_REGION_H
 
 #include <CGAL/boost/graph/iterator.h>
+#include <CGAL/boost/graph/properties.h>
+#include <CGAL/number_utils.h>
 
 #include <boost/graph/graph_traits.hpp>
 
