@@ -1,10 +1,11 @@
-// Tests of label cleaning (patches/clean_labels.h): islands, jagged borders,
+// Tests of label cleaning (correspondence/clean_labels.h): islands, jagged borders,
 // regions touching themselves at a vertex, clean labels left alone, and the
 // same result whatever the face and vertex order.
 #include "test_data.h"
 
-#include <diffuv/patches/clean_labels.h>
 #include <diffuv/layout/disc_patches.h>
+#include <diffuv/correspondence/clean_labels.h>
+#include <diffuv/patches/patches_from_labels.h>
 #include <diffuv/patches/segmentation.h>
 
 #include <algorithm>

@@ -14,7 +14,7 @@
 #include <diffuv/graph/distance_tags.h>
 #include <diffuv/parameterization/parameterize_patches.h>
 #include <diffuv/parameterization/repair_folds.h>
-#include <diffuv/patches/clean_labels.h>
+#include <diffuv/correspondence/clean_labels.h>
 #include <diffuv/layout/disc_patches.h>
 #include <diffuv/layout/sub_patches.h>
 
@@ -53,8 +53,8 @@ struct Labelled_atlas_options {
   /// points by their (u,v), and the raw diffusion coordinates are the same
   /// smooth functions of the surface on any tessellation, where a repaired
   /// chart is re-solved wherever that tessellation folded, differently on
-  /// each mesh: measured, the raw charts map 1.3-1.5x closer to the truth
-  /// (doc/correspondence.md). Point location stays well defined on a fold (it
+  /// each mesh: the raw charts map closer to the truth (measured in
+  /// doc/correspondence.md). Point location stays well defined on a fold (it
   /// picks one sheet by a rule that does not depend on the numbering).
   Repair_options repair{false};
   /// Split regions with three or five and more runs of neighbours into
