@@ -139,13 +139,11 @@ inline const char* cgal_error_message(CGAL::Surface_mesh_parameterization::Error
 /// `CGAL::Surface_mesh<Epick::Point_3>` (this works for any input type:
 /// Polyhedron_3 without vertex ids, Seam_mesh's halfedge-based vertices, exact
 /// kernels), the diffusion runs on the copy, and the (u,v) are copied back.
-/// That is not free: the copy alone takes 10-15 % of the time of the diffusion
-/// with graph distances (0.2 ms on nefertiti's 299 vertices, 2 ms on
-/// mushroom's 2.3k, 14 ms on lion-head's 8.4k), plus a second mesh in memory
-/// and the (u,v) written through `uvmap`; through CGAL's `parameterize()`,
-/// which builds its own vertex index map too, expect 10-40 % more time than
-/// calling `parameterize_disc()` (parameterization/parameterize_disc.h)
-/// directly on a `CGAL::Surface_mesh`. That native API needs no copy and gives
+/// That is not free (doc/performance.md, "Cost of the CGAL adapter"): the copy,
+/// a second mesh in memory and the (u,v) written through `uvmap`; through
+/// CGAL's `parameterize()`, which builds its own vertex index map too, it
+/// costs more than calling `parameterize_disc()`
+/// (parameterization/parameterize_disc.h) directly on a `CGAL::Surface_mesh`. That native API needs no copy and gives
 /// the same (u,v): the copy keeps the order of `vertices(mesh)` and, for a
 /// whole mesh, of `faces(mesh)` (tested equal on a Surface_mesh and a
 /// Polyhedron_3). Use it, or `parameterize_patches()` for a mesh that is not a

@@ -1,8 +1,8 @@
 // diffuv: multi-source fast marching on triangle meshes.
 //
 // Graph (edge-path) distances follow the tessellation: from a side of a patch
-// they overestimate the surface distance by ~7 % on average and bend the
-// (u,v) iso-lines along the edges. The fast marching method (Kimmel and
+// they overestimate the surface distance and bend the (u,v) iso-lines along
+// the edges. The fast marching method (Kimmel and
 // Sethian, "Computing geodesic paths on manifolds", PNAS 1998) keeps the
 // multi-source Dijkstra's heap-driven order but computes a vertex from two
 // known vertices of a triangle, as if a planar wavefront crossed it, so
@@ -10,10 +10,10 @@
 // (buffers and per-mesh geometry kept between runs, four runs per patch) and
 // as a one-shot function.
 //
-// Accuracy (first order; see the class comment for the numbers): a straight
-// front is reproduced exactly on flat meshes wherever the obtuse angles can
-// be split; on real meshes, from a border arc, about 1 % above the exact
-// polyhedral distance on average, against 6-9 % for edge paths.
+// Accuracy (first order): a straight front is reproduced exactly on flat
+// meshes wherever the obtuse angles can be split; on real meshes it is much
+// closer to the exact polyhedral distance than edge paths are (measured in
+// doc/design.md, "Distances").
 #ifndef DIFFUV_GRAPH_FAST_MARCHING_H
 #define DIFFUV_GRAPH_FAST_MARCHING_H
 
@@ -116,10 +116,7 @@ inline double planar_wave_update(double d0, double d1, double L, double cx, doub
 /// replace it; keeping it was measured better, see `add_corner()`). When no
 /// such vertex is found (an obtuse angle facing the mesh or patch border, the
 /// step limit), the edge updates remain the fallback. The unfolding is done
-/// once, by the constructor. Strips are short: on CGAL's nefertiti, mushroom,
-/// lion-head, cow and mannequin-devil meshes, 84-88 % of the obtuse angles
-/// are split after one step, 92-99 % within four, and the default 16 leaves
-/// 0.2-8 % unsplit (nefertiti: 12 of 149, facing the border).
+/// once, by the constructor; strips are short (doc/design.md, "Distances").
 ///
 /// **Guarantees.** Sources get 0 and unreachable vertices `+infinity`. Since
 /// every edge update is made, the result is never above the edge-path
@@ -131,23 +128,8 @@ inline double planar_wave_update(double d0, double d1, double L, double cx, doub
 /// segment between them (the side as a polyline, not as a set of points), and
 /// a plane wave on coarse curved triangles errs either way.
 ///
-/// **Measured accuracy** (test/test_distances.cpp and a timing program; exact = CGAL's
-/// `Surface_mesh_shortest_path`, `exact_geodesic_distances()`):
-/// - flat 40x40 grid of the unit square, left column as sources: regular
-///   grid, fmm = x to round-off; 30 %-jittered grid (five seeds), fmm = x to
-///   round-off when all obtuse angles are split (4 seeds of 5), else mean
-///   |fmm - x| 0.006 % of the side, max 0.48 %; without the unfolding
-///   (`max_unfolding_steps = 0`) mean 0.33-0.39 %, max 1.1-1.4 %.
-/// - the four quarters of the boundary loop as sources, error relative to the
-///   largest exact distance, mean / max of |fmm - exact|, and mean relative
-///   excess over exact (plain = without the unfolding):
-///   nefertiti.off (299 vertices) 0.83 % / 4.8 %, +1.0 % (plain +1.1 %, graph +5.7 %);
-///   mushroom.off (2.3k) 0.68 % / 1.9 %, +1.3 % (plain +1.4 %, graph +7.6 %);
-///   lion-head.off (8.4k) 0.80 % / 2.6 %, +1.25 % (plain +2.1 %, graph +8.6 %).
-/// - four passes (one per quarter, one object, -O2): 0.42 ms, 4.2 ms and 21 ms
-///   (of which the constructor 0.1, 1.5 and 3.3 ms), against 0.2, 1.6 and
-///   7.8 ms for the graph Dijkstra and 14 ms, 0.73 s and 2.9 s for the exact
-///   geodesics.
+/// **Accuracy and cost** are measured in doc/design.md, "Distances"
+/// (test/test_distances.cpp checks the bounds).
 ///
 /// **Patches.** Only the faces of `g` are crossed: on a
 /// `CGAL::Face_filtered_graph` the unfolding and the updates stop at the
@@ -385,11 +367,8 @@ private:
         add_update(c, d, q, C, D, Q);
         // The obtuse triangle is kept too. Replacing it, as Kimmel and Sethian
         // do, made the mean error worse than no unfolding at all when the
-        // front is curved: point source on a 15 %-jittered 40x40 grid, 0.0133
-        // against 0.0094 without unfolding and 0.0075 keeping it; mushroom.off
-        // from a border arc, 0.93 % against 0.79 % and 0.65 % of the largest
-        // distance. More candidates only lower the minimum, and fast marching
-        // errs mostly upwards.
+        // front is curved (doc/design.md, "Distances"). More candidates only
+        // lower the minimum, and fast marching errs mostly upwards.
       }
     }
     add_update(c, p, q, C, P, Q);

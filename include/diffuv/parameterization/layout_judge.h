@@ -1,7 +1,7 @@
 // diffuv: judging a layout of patches by the diffusion map each patch gets.
 //
 // The four-sided layout (layout/quad_layout.h) is refined until the raw
-// diffusion map is good (issue #18): a patch whose map folds, squashes its
+// diffusion map is good: a patch whose map folds, squashes its
 // triangles or stretches them too much asks for its cell to be split. This
 // judge maps every patch the way the default pipeline does (fast marching,
 // here without the fold repair) and measures it on the patch's own

@@ -1,0 +1,343 @@
+// diffuv: what the fold repair (parameterization/repair_folds.h) works on: a
+// patch's vertices by index with their (u,v), sides and triangles, and the
+// operations of the repair: finding local defects and bent triangles,
+// re-solving a set of vertices as a mean value map, growing a region by rings,
+// walking and re-spacing the sides.
+#ifndef DIFFUV_PARAMETERIZATION_INTERNAL_REPAIR_PATCH_H
+#define DIFFUV_PARAMETERIZATION_INTERNAL_REPAIR_PATCH_H
+
+#include <diffuv/core/four_sides.h>
+#include <diffuv/internal/uv_triangle.h>
+
+#include <CGAL/number_utils.h>
+#include <CGAL/squared_distance_3.h>
+
+#include <Eigen/SparseCore>
+#include <Eigen/SparseLU>
+
+#include <boost/graph/graph_traits.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <utility>
+#include <vector>
+
+namespace diffuv {
+namespace internal {
+
+/// Whether triangle t of (u, v) is counter-clockwise and not degenerate (area
+/// above 1e-14 of `total`, the threshold of measure_distortion).
+inline bool positive_triangle(const std::array<std::size_t, 3>& t, const std::vector<double>& u,
+                              const std::vector<double>& v, double total)
+{
+  const Uv_triangle uv_t = {Uv_point(u[t[0]], v[t[0]]), Uv_point(u[t[1]], v[t[1]]), Uv_point(u[t[2]], v[t[2]])};
+  const double a = signed_area(uv_t);
+  return !is_degenerate_area(a, total) && a > 0 && CGAL::orientation(uv_t[0], uv_t[1], uv_t[2]) == CGAL::LEFT_TURN;
+}
+
+/// The vertices of a patch by index, their sides, the patch's triangles, and
+/// the map being repaired.
+template <class TriangleMesh, class Point_3>
+struct Repair_patch {
+  using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
+  using Triangle = std::array<std::size_t, 3>;
+
+  std::vector<vertex_descriptor> vertex;          // by index
+  std::vector<Point_3> xyz;                       // by index
+  std::vector<double> u, v;                       // by index: the map
+  std::vector<std::uint8_t> side_mask;            // bit s set: on side s (in the order of `Side`)
+  std::vector<Triangle> triangle;
+  std::vector<std::vector<std::size_t>> faces_of; // triangles around each vertex
+  std::vector<bool> flat;                         // flat in any map onto the square
+  std::vector<std::vector<std::size_t>> ring;     // neighbours of each vertex (`find_rings()`)
+  std::vector<bool> bad_face, bad_vertex;         // local defects (`find_defects()`)
+  std::vector<bool> thin;                         // bent triangles (`find_thin()`)
+  std::array<double, 2> rectangle{{1., 1.}};      // the chart's rectangle, for the bends
+  std::size_t solves = 0;                         // linear solves made
+
+  std::size_t size() const { return vertex.size(); }
+
+  /// Marks as flat the faces around a connected group of interior vertices
+  /// whose border neighbours all lie on one side: a convex combination of
+  /// points on a line stays on it (components across interior edges).
+  void mark_flat_interior_groups()
+  {
+    const std::size_t n = size();
+    std::vector<std::size_t> component(n, n);
+    std::vector<std::size_t> members;
+    for(std::size_t seed = 0; seed < n; ++seed) {
+      if(side_mask[seed] || component[seed] < n || faces_of[seed].empty()) continue;
+      members.assign(1, seed);
+      component[seed] = seed;
+      std::uint8_t common = 0xF;
+      for(std::size_t k = 0; k < members.size(); ++k)
+        for(std::size_t f : faces_of[members[k]])
+          for(std::size_t j : triangle[f]) {
+            if(side_mask[j]) common &= side_mask[j];
+            else if(component[j] == n) {
+              component[j] = seed;
+              members.push_back(j);
+            }
+          }
+      if(common)
+        for(std::size_t i : members)
+          for(std::size_t f : faces_of[i]) flat[f] = true;
+    }
+  }
+
+  /// Local defects: a triangle that is not counter-clockwise (or degenerate),
+  /// or a vertex around which the triangles turn by more than once: 2 pi for
+  /// an interior vertex, less than 2 pi for a border one (pi on a side, pi/2 at
+  /// a corner). Theorem: a map of a disc without local defects whose border
+  /// runs once around the square (monotone sides) is a local homeomorphism
+  /// that is one-to-one on the border, hence one-to-one. So no overlap test is
+  /// needed, before or after the repair (the tests check overlaps independently).
+  /// Returns the number of faces that are or touch a defect.
+  std::size_t find_defects()
+  {
+    const double total_area = 1.;  // the unit square
+    const std::size_t n = size();
+    bad_face.assign(triangle.size(), false);
+    bad_vertex.assign(n, false);
+    std::size_t count = 0;
+    for(std::size_t f = 0; f < triangle.size(); ++f) {
+      bad_face[f] = !flat[f] && !positive_triangle(triangle[f], u, v, total_area);
+      count += bad_face[f];
+    }
+    for(std::size_t i = 0; i < n; ++i) {
+      // Interior vertex: the winding number of its link around it, counted
+      // as signed crossings of the ray from the vertex along +u (no
+      // trigonometry; the link's edges are the faces' far edges). Border
+      // vertex: the total angle of its open fan, which must stay below 2 pi.
+      double turn = 0;
+      int winding = 0;
+      for(std::size_t f : faces_of[i]) {
+        const auto& t = triangle[f];
+        const int k = t[0] == i ? 0 : (t[1] == i ? 1 : 2);
+        const std::size_t a = t[(k + 1) % 3], b = t[(k + 2) % 3];
+        const double ax = u[a] - u[i], ay = v[a] - v[i], bx = u[b] - u[i], by = v[b] - v[i];
+        if(side_mask[i]) {
+          turn += std::atan2(ax * by - ay * bx, ax * bx + ay * by);
+        } else if((ay < 0) != (by < 0)) {
+          const double x = ax + ay / (ay - by) * (bx - ax);  // where edge ab meets v = v_i
+          if(x > 0) winding += ay < 0 ? 1 : -1;
+        }
+      }
+      bad_vertex[i] = side_mask[i] ? !(turn < 2 * CGAL_PI - 1e-6) : winding != 1;
+      if(bad_vertex[i])
+        for(std::size_t f : faces_of[i]) count += !bad_face[f];
+    }
+    return count;
+  }
+
+  /// How much the map bends a triangle's shape on the chart's rectangle
+  /// (sigma_max / sigma_min of its Jacobian; 0 for a triangle degenerate in 3D).
+  double bend(const Triangle& t) const
+  {
+    const auto e1 = xyz[t[1]] - xyz[t[0]], e2 = xyz[t[2]] - xyz[t[0]];
+    const double l1 = std::sqrt(CGAL::to_double(e1 * e1));
+    const double x2 = l1 > 0 ? CGAL::to_double(e1 * e2) / l1 : 0.;
+    const double y2_squared = CGAL::to_double(e2 * e2) - x2 * x2;
+    if(!(l1 > 0 && y2_squared > 0)) return 0.;
+    const double y2 = std::sqrt(y2_squared);
+    // The triangle in a frame of its plane is [[l1, x2], [0, y2]]; J maps it onto its (u,v) edges.
+    const double du1 = (u[t[1]] - u[t[0]]) * rectangle[0], du2 = (u[t[2]] - u[t[0]]) * rectangle[0];
+    const double dv1 = (v[t[1]] - v[t[0]]) * rectangle[1], dv2 = (v[t[2]] - v[t[0]]) * rectangle[1];
+    const auto [s_max, s_min] = singular_values_2x2(du1 / l1, (du2 - du1 * x2 / l1) / y2, dv1 / l1, (dv2 - dv1 * x2 / l1) / y2);
+    return s_min > 0 ? s_max / s_min : std::numeric_limits<double>::infinity();
+  }
+
+  /// Marks the triangles bent beyond `limit` (flat ones aside: flat in any
+  /// map); returns how many, and the worst bend.
+  std::pair<std::size_t, double> find_thin(double limit)
+  {
+    thin.assign(triangle.size(), false);
+    std::size_t count = 0;
+    double worst = 0;
+    for(std::size_t f = 0; f < triangle.size(); ++f) {
+      if(flat[f]) continue;
+      const double b = bend(triangle[f]);
+      worst = std::max(worst, b);
+      thin[f] = b > limit;
+      count += thin[f];
+    }
+    return std::make_pair(count, worst);
+  }
+
+  /// Fills `ring`: the neighbours of each vertex, for growing regions.
+  void find_rings()
+  {
+    ring.assign(size(), {});
+    for(const auto& t : triangle)
+      for(int k = 0; k < 3; ++k) {
+        ring[t[k]].push_back(t[(k + 1) % 3]);
+        ring[t[k]].push_back(t[(k + 2) % 3]);
+      }
+    for(auto& nb : ring) {
+      std::sort(nb.begin(), nb.end());
+      nb.erase(std::unique(nb.begin(), nb.end()), nb.end());
+    }
+  }
+
+  /// The weights of a re-solved vertex: mean value weights (Floater 2003),
+  /// w_ij = (tan(a/2) + tan(b/2)) / |x_i - x_j| with a and b the 3D angles at
+  /// x_i next to edge ij. They follow the surface's shape (better angles than
+  /// Tutte's uniform weights) and are positive, which is all Floater's
+  /// embedding theorem needs. Uniform weights where an angle is undefined
+  /// (a zero-length edge). (Symmetrised mean value weights would allow a
+  /// Cholesky solve but measured worse angles: doc/quality.md.)
+  void weights_of(std::size_t i, std::vector<std::pair<std::size_t, double>>& row) const
+  {
+    row.clear();
+    for(std::size_t f : faces_of[i]) {
+      const auto& t = triangle[f];
+      const int k = t[0] == i ? 0 : (t[1] == i ? 1 : 2);
+      const std::size_t a = t[(k + 1) % 3], b = t[(k + 2) % 3];
+      const auto ea = xyz[a] - xyz[i], eb = xyz[b] - xyz[i];
+      const double la = std::sqrt(CGAL::to_double(ea * ea)), lb = std::sqrt(CGAL::to_double(eb * eb));
+      const double half_tan =
+          la > 0 && lb > 0 ? std::tan(std::acos(std::clamp(CGAL::to_double(ea * eb) / (la * lb), -1., 1.)) / 2) : 0.;
+      if(!(half_tan > 0) || !std::isfinite(half_tan)) {
+        row.clear();
+        for(std::size_t g : faces_of[i])
+          for(std::size_t j : triangle[g])
+            if(j != i) row.emplace_back(j, 1.);
+        return;
+      }
+      row.emplace_back(a, half_tan / la);
+      row.emplace_back(b, half_tan / lb);
+    }
+  }
+
+  /// Re-solves the vertices flagged in `free_vertex` with every other vertex fixed.
+  bool solve(const std::vector<bool>& free_vertex)
+  {
+    const std::size_t n = size();
+    std::vector<std::size_t> local_of(n, n);
+    std::vector<std::size_t> unknowns;
+    for(std::size_t i = 0; i < n; ++i)
+      if(free_vertex[i]) {
+        local_of[i] = unknowns.size();
+        unknowns.push_back(i);
+      }
+    if(unknowns.empty()) return true;
+    ++solves;
+    const auto m = static_cast<Eigen::Index>(unknowns.size());
+    std::vector<Eigen::Triplet<double>> entries;
+    Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(m, 2);
+    std::vector<std::pair<std::size_t, double>> row;
+    for(std::size_t li = 0; li < unknowns.size(); ++li) {
+      const std::size_t i = unknowns[li];
+      const auto row_index = static_cast<Eigen::Index>(li);
+      weights_of(i, row);
+      double diagonal = 0;
+      for(const auto& [j, w] : row) {
+        diagonal += w;
+        if(local_of[j] < n) {
+          entries.emplace_back(row_index, static_cast<Eigen::Index>(local_of[j]), -w);
+        } else {
+          rhs(row_index, 0) += w * u[j];
+          rhs(row_index, 1) += w * v[j];
+        }
+      }
+      entries.emplace_back(row_index, row_index, diagonal);
+    }
+    Eigen::SparseMatrix<double> a(m, m);
+    a.setFromTriplets(entries.begin(), entries.end());
+    Eigen::SparseLU<Eigen::SparseMatrix<double>> lu;
+    lu.compute(a);
+    if(lu.info() != Eigen::Success) return false;
+    const Eigen::MatrixXd x = lu.solve(rhs);
+    if(lu.info() != Eigen::Success || !x.allFinite()) return false;
+    // Convex combinations of points of the unit square stay in it up to a
+    // rounding step: clamp that step, (u,v) are documented to be in [0,1].
+    for(std::size_t li = 0; li < unknowns.size(); ++li) {
+      u[unknowns[li]] = std::clamp(x(static_cast<Eigen::Index>(li), 0), 0., 1.);
+      v[unknowns[li]] = std::clamp(x(static_cast<Eigen::Index>(li), 1), 0., 1.);
+    }
+    return true;
+  }
+
+  /// Marks in `into` the interior vertices within `steps` edges of `seeds`
+  /// (a border seed reaches out through its neighbours, other border vertices
+  /// stop the search) and returns how many `into` holds. A new search each
+  /// time, so that a region whose defects lie inside it still grows.
+  std::size_t grow(const std::vector<std::size_t>& seeds, std::size_t steps, std::vector<bool>& into) const
+  {
+    const std::size_t n = size();
+    std::vector<bool> reached(n, false);
+    std::vector<std::size_t> front;
+    for(std::size_t i : seeds)
+      if(!reached[i]) {
+        reached[i] = true;
+        front.push_back(i);
+      }
+    for(std::size_t step = 0; step < steps && !front.empty(); ++step) {
+      std::vector<std::size_t> next;
+      for(std::size_t i : front)
+        for(std::size_t j : ring[i])
+          if(!reached[j]) {
+            reached[j] = true;
+            if(!side_mask[j]) next.push_back(j);
+          }
+      front.swap(next);
+    }
+    std::size_t count = 0;
+    for(std::size_t i = 0; i < n; ++i) {
+      if(reached[i] && !side_mask[i]) into[i] = true;
+      count += into[i];
+    }
+    return count;
+  }
+};
+
+/// One side walked counter-clockwise: v1 has u increasing, u2 v increasing,
+/// v2 u decreasing, u1 v decreasing, so each side runs once along its edge of
+/// the square.
+struct Side_walk {
+  std::vector<std::size_t> vertices;  // vertex indices, in the side's order
+  bool along_u = true;
+  bool increasing = true;
+  std::uint8_t bit = 0;               // the side's bit in `Repair_patch::side_mask`
+
+  template <class Patch>
+  std::vector<double> arc_lengths(const Patch& p) const
+  {
+    std::vector<double> arc(vertices.size(), 0.);
+    for(std::size_t k = 1; k < vertices.size(); ++k)
+      arc[k] = arc[k - 1] + std::sqrt(CGAL::to_double(CGAL::squared_distance(p.xyz[vertices[k - 1]], p.xyz[vertices[k]])));
+    return arc;
+  }
+
+  template <class Patch>
+  bool monotone(const Patch& p) const
+  {
+    const std::vector<double>& c = along_u ? p.u : p.v;
+    for(std::size_t k = 1; k < vertices.size(); ++k) {
+      const double a = c[vertices[k - 1]], b = c[vertices[k]];
+      if(!(increasing ? a < b : a > b)) return false;
+    }
+    return true;
+  }
+
+  /// Re-spaces the side's inner vertices by arc length.
+  template <class Patch>
+  void respace(Patch& p) const
+  {
+    std::vector<double>& c = along_u ? p.u : p.v;
+    const std::vector<double> arc = arc_lengths(p);
+    const double total = arc.back();
+    for(std::size_t k = 1; k + 1 < vertices.size(); ++k) {
+      const double t = total > 0 ? arc[k] / total : double(k) / double(vertices.size() - 1);
+      c[vertices[k]] = increasing ? t : 1. - t;
+    }
+  }
+};
+
+} // namespace internal
+} // namespace diffuv
+
+#endif // DIFFUV_PARAMETERIZATION_INTERNAL_REPAIR_PATCH_H
