@@ -314,3 +314,33 @@ TEST(EdgeLengths, MatchEuclideanLengths)
 }
 
 } // namespace
+
+namespace {
+
+using vertex_descriptor_of_mesh = diffuv_test::Mesh::Vertex_index;
+
+TEST(Dijkstra, NearestSourceIsTheSourceThatGivesTheDistance)
+{
+  // The Voronoi origin of each vertex: running Dijkstra from that source alone
+  // gives the multi-source distance.
+  const diffuv_test::Mesh& m = diffuv_test::cgal_mesh("mushroom.off");
+  auto lengths = diffuv::edge_length_map(m);
+  std::vector<vertex_descriptor_of_mesh> sources = {vertex_descriptor_of_mesh(3), vertex_descriptor_of_mesh(400), vertex_descriptor_of_mesh(1500)};
+  std::vector<double> dist(num_vertices(m));
+  std::vector<std::size_t> origin(num_vertices(m), 99);
+  auto index = get(boost::vertex_index, m);
+  diffuv::Multi_source_dijkstra<diffuv_test::Mesh> dijkstra(m);
+  ASSERT_TRUE(dijkstra.run(sources, lengths, boost::make_iterator_property_map(dist.begin(), index),
+                           boost::make_iterator_property_map(origin.begin(), index)).ok());
+  std::vector<std::vector<double>> single(3, std::vector<double>(num_vertices(m)));
+  for(std::size_t s = 0; s < 3; ++s)
+    ASSERT_TRUE(dijkstra.run(std::vector<vertex_descriptor_of_mesh>{sources[s]}, lengths,
+                             boost::make_iterator_property_map(single[s].begin(), index)).ok());
+  for(auto v : vertices(m)) {
+    ASSERT_LT(origin[v.idx()], 3u);
+    EXPECT_EQ(single[origin[v.idx()]][v.idx()], dist[v.idx()]) << v;
+  }
+}
+
+
+} // namespace

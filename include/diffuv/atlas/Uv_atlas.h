@@ -234,13 +234,7 @@ public:
   /// faces in no chart give (NaN, NaN).
   auto corner_uv_map() const
   {
-    return boost::make_function_property_map<halfedge_descriptor>([this](halfedge_descriptor h) {
-      const double nan = std::numeric_limits<double>::quiet_NaN();
-      if(is_border(h, mesh_)) return Point_2(nan, nan);
-      const std::size_t c = chart_of(face(h, mesh_));
-      if(c == no_chart) return Point_2(nan, nan);
-      return uv_in_chart(target(h, mesh_), c);
-    });
+    return corner_map([this](vertex_descriptor v, std::size_t c) { return uv_in_chart(v, c); });
   }
 
   /// Sets the rectangle chart `c` is drawn in (`Chart::size`), e.g. the
@@ -252,12 +246,8 @@ public:
   /// (`Chart::size`): the texture coordinates an OBJ or glTF file carries.
   auto corner_texture_map() const
   {
-    return boost::make_function_property_map<halfedge_descriptor>([this](halfedge_descriptor h) {
-      const double nan = std::numeric_limits<double>::quiet_NaN();
-      if(is_border(h, mesh_)) return Point_2(nan, nan);
-      const std::size_t c = chart_of(face(h, mesh_));
-      if(c == no_chart) return Point_2(nan, nan);
-      const Point_2 q = uv_in_chart(target(h, mesh_), c);
+    return corner_map([this](vertex_descriptor v, std::size_t c) {
+      const Point_2 q = uv_in_chart(v, c);
       return Point_2(q.x() * charts_[c]->size[0], q.y() * charts_[c]->size[1]);
     });
   }
@@ -351,6 +341,20 @@ public:
   }
 
 private:
+  // A halfedge map giving `at(target(h), chart of face(h))`; (NaN, NaN) on
+  // border halfedges and faces in no chart.
+  template <class At>
+  auto corner_map(At at) const
+  {
+    return boost::make_function_property_map<halfedge_descriptor>([this, at](halfedge_descriptor h) {
+      const double nan = std::numeric_limits<double>::quiet_NaN();
+      if(is_border(h, mesh_)) return Point_2(nan, nan);
+      const std::size_t c = chart_of(face(h, mesh_));
+      if(c == no_chart) return Point_2(nan, nan);
+      return at(target(h, mesh_), c);
+    });
+  }
+
   Point_2 uv_in_chart(vertex_descriptor v, std::size_t c) const
   {
     auto e = entries(v);

@@ -17,6 +17,18 @@
 #include <vector>
 
 namespace diffuv {
+namespace internal {
+
+/// `ok` for a connected surface with one border whose Euler characteristic
+/// is 1 (a disc), else `not_a_disc` naming the characteristic and the genus.
+inline Status disc_euler_status(long long euler)
+{
+  if(euler == 1) return Status();
+  return Status(Status_code::not_a_disc,
+                "Euler characteristic " + std::to_string(euler) + ", genus " + std::to_string((1 - euler) / 2));
+}
+
+} // namespace internal
 
 /// Returns the border halfedges (face is null) starting each boundary loop of `tm`, one per loop.
 template <class FaceGraph>
@@ -77,12 +89,8 @@ Status check_disc(const TriangleMesh& tm)
   if(loops == 0) return Status(Status_code::no_border);
   if(loops > 1) return Status(Status_code::several_borders, std::to_string(loops) + " boundary loops");
 
-  const long long euler = static_cast<long long>(num_vertices(tm)) - static_cast<long long>(num_edges(tm)) +
-                          static_cast<long long>(num_faces(tm));
-  if(euler != 1)
-    return Status(Status_code::not_a_disc,
-                  "Euler characteristic " + std::to_string(euler) + ", genus " + std::to_string((1 - euler) / 2));
-  return Status();
+  return internal::disc_euler_status(static_cast<long long>(num_vertices(tm)) - static_cast<long long>(num_edges(tm)) +
+                                     static_cast<long long>(num_faces(tm)));
 }
 
 } // namespace diffuv

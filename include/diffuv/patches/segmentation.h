@@ -10,6 +10,7 @@
 
 #include <diffuv/core/error.h>
 #include <diffuv/internal/index_marks.h>
+#include <diffuv/patches/disc_topology.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -206,11 +207,8 @@ Status check_patch_disc(const TriangleMesh& tm, const Segmentation<TriangleMesh>
   if(repeat != loop_ids.end())
     return fail(Status_code::non_manifold, "the boundary passes vertex " + std::to_string(*repeat) + " twice");
   const std::size_t F = pf.size(), E = (3 * F + boundary_edges) / 2;
-  const long long euler = static_cast<long long>(V) - static_cast<long long>(E) + static_cast<long long>(F);
-  if(euler != 1)
-    return fail(Status_code::not_a_disc,
-                "Euler characteristic " + std::to_string(euler) + ", genus " + std::to_string((1 - euler) / 2));
-  return Status();
+  const Status disc = internal::disc_euler_status(static_cast<long long>(V) - static_cast<long long>(E) + static_cast<long long>(F));
+  return disc ? disc : fail(disc.code, disc.detail);
 }
 
 } // namespace diffuv

@@ -1,0 +1,174 @@
+// Tests of parameterize_patches() (parameterization/parameterize_patches.h)
+// and the compact patch graph it maps on (graph/patch_graph.h).
+#include "test_data.h"
+
+#include <diffuv/graph/patch_graph.h>
+#include <diffuv/layout/disc_patches.h>
+#include <diffuv/layout/voronoi_discs.h>
+#include <diffuv/parameterization/parameterize_disc.h>
+#include <diffuv/parameterization/parameterize_patches.h>
+#include <diffuv/patches/flat_triangles.h>
+#include <diffuv/patches/merge_small_patches.h>
+#include <diffuv/patches/patches_from_labels.h>
+#include <diffuv/patches/region_sides.h>
+#include <diffuv/patches/smooth_region_borders.h>
+#include <diffuv/patches/split_at_junctions.h>
+#include <diffuv/patches/split_cap.h>
+
+#include <CGAL/boost/graph/Face_filtered_graph.h>
+
+#include <boost/graph/dijkstra_shortest_paths.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <numeric>
+#include <random>
+#include <set>
+#include <string>
+
+namespace {
+
+using namespace diffuv_test;
+using vertex_descriptor = Mesh::Vertex_index;
+using face_descriptor = Mesh::Face_index;
+using Seg = diffuv::Segmentation<Mesh>;
+
+// ---------------------------------------------------------------------------
+// The fast paths of parameterize_patches() (doc/performance.md): the compact
+// patch graph of the paper's method, and patches mapped on several threads.
+
+// Each patch of the automatic patches of `name`, with its sides.
+struct Mapped_patches {
+  Seg seg;
+  std::vector<diffuv::Four_sides<vertex_descriptor>> sides;
+};
+
+Mapped_patches automatic_patches(const Mesh& m)
+{
+  Mapped_patches out;
+  EXPECT_TRUE(diffuv::disc_patches(m, m.points(), {}, out.seg).ok());
+  out.sides.resize(out.seg.number_of_patches());
+  for(std::size_t p = 0; p < out.seg.number_of_patches(); ++p)
+    EXPECT_TRUE(diffuv::region_sides(m, m.points(), out.seg, p, out.sides[p]).ok());
+  return out;
+}
+
+TEST(PatchGraph, DistancesMatchBoostDijkstraOnTheFilteredPatch)
+{
+  const Mesh& cow = cgal_mesh("cow.off");
+  const Mapped_patches mp = automatic_patches(cow);
+  const auto lengths = diffuv::edge_length_map(cow, cow.points());
+  auto findex = get(boost::face_index, cow);
+  diffuv::Patch_graph<Mesh> pg; // one object for every patch, as parameterize_patches() uses it
+  for(std::size_t p = 0; p < mp.seg.number_of_patches(); ++p) {
+    pg.build(cow, mp.seg.patch_faces[p],
+             [&](face_descriptor f) { return f != Mesh::null_face() && mp.seg.face_patch[get(findex, f)] == p; }, lengths);
+    const CGAL::Face_filtered_graph<Mesh> patch(cow, mp.seg.patch_faces[p]);
+    ASSERT_EQ(pg.number_of_vertices(), num_vertices(patch)) << "patch " << p;
+    ASSERT_EQ(num_edges(pg.graph()), 2 * num_edges(patch)) << "patch " << p; // both directions of each edge
+    for(std::size_t i = 0; i < pg.number_of_vertices(); ++i)
+      ASSERT_EQ(pg.local(cow, pg.mesh_vertices()[i]), i);
+    std::size_t outside = 0;
+    for(vertex_descriptor v : vertices(cow))
+      if(!patch.is_in_cc(v)) outside += pg.local(cow, v) == diffuv::Patch_graph<Mesh>::none;
+    EXPECT_EQ(outside, num_vertices(cow) - num_vertices(patch)) << "patch " << p;
+
+    // Reference: Boost's Dijkstra on the filtered patch, from side u1, with
+    // the same edge lengths.
+    auto pindex = get(boost::vertex_index, patch);
+    std::vector<double> expected(num_vertices(patch));
+    std::vector<boost::graph_traits<CGAL::Face_filtered_graph<Mesh>>::vertex_descriptor> pred(num_vertices(patch));
+    boost::dijkstra_shortest_paths(
+        patch, mp.sides[p].u1.begin(), mp.sides[p].u1.end(), boost::make_iterator_property_map(pred.begin(), pindex),
+        boost::make_iterator_property_map(expected.begin(), pindex), lengths, pindex, std::less<double>(),
+        boost::closed_plus<double>(), std::numeric_limits<double>::infinity(), 0.,
+        boost::default_dijkstra_visitor());
+    std::vector<std::uint32_t> sources;
+    for(vertex_descriptor v : mp.sides[p].u1) sources.push_back(pg.local(cow, v));
+    std::vector<double> got(pg.number_of_vertices());
+    diffuv::Multi_source_dijkstra<diffuv::Patch_graph<Mesh>::Graph> dijkstra(pg.graph());
+    ASSERT_TRUE(dijkstra.run(sources, pg.length_map(), boost::make_iterator_property_map(got.begin(), get(boost::vertex_index, pg.graph()))).ok());
+    for(vertex_descriptor v : vertices(patch))
+      EXPECT_NEAR(got[pg.local(cow, v)], expected[get(pindex, v)], 1e-12) << "patch " << p << " vertex " << v;
+  }
+}
+
+// The paper's method (graph distances, no repair) runs on the compact graph;
+// the same coordinates as the four runs on a Face_filtered_graph of the patch.
+TEST(PatchGraph, PaperMethodGivesTheCoordinatesOfTheFilteredGraph)
+{
+  const Mesh& man = cgal_mesh("man.off");
+  const Mapped_patches mp = automatic_patches(man);
+  diffuv::Uv_atlas<Mesh> atlas(man);
+  const auto results = diffuv::parameterize_patches<diffuv::Graph_distance_tag>(man, man.points(), mp.seg, atlas, diffuv::Patch_parameterization_options{diffuv::Repair_options{false}});
+  const auto lengths = diffuv::edge_length_map(man, man.points());
+  for(std::size_t p = 0; p < mp.seg.number_of_patches(); ++p) {
+    ASSERT_TRUE(results[p].status.ok()) << "patch " << p;
+    const CGAL::Face_filtered_graph<Mesh> patch(man, mp.seg.patch_faces[p]);
+    auto pindex = get(boost::vertex_index, patch);
+    std::vector<Point_2> uv(num_vertices(patch));
+    ASSERT_TRUE(diffuv::diffusion_coordinates<diffuv::Graph_distance_tag>(patch, mp.sides[p], lengths,
+                                              boost::make_iterator_property_map(uv.begin(), pindex))
+                    .ok());
+    const auto& chart = atlas.chart(results[p].chart);
+    ASSERT_EQ(chart.vertices.size(), uv.size());
+    for(std::size_t i = 0; i < chart.vertices.size(); ++i) {
+      const Point_2 want = uv[get(pindex, chart.vertices[i])];
+      EXPECT_NEAR(chart.uv[i].x(), want.x(), 1e-12) << "patch " << p << " vertex " << chart.vertices[i];
+      EXPECT_NEAR(chart.uv[i].y(), want.y(), 1e-12) << "patch " << p << " vertex " << chart.vertices[i];
+    }
+  }
+}
+
+// Patches mapped on 1, 2 or all threads: the same atlas, bit for bit, and the
+// same results, with both pipelines.
+TEST(ParallelPatches, ResultsDoNotDependOnTheNumberOfThreads)
+{
+  const Mesh& cow = cgal_mesh("cow.off");
+  const Mapped_patches mp = automatic_patches(cow);
+  for(bool paper : {true, false}) {
+    std::vector<std::unique_ptr<diffuv::Uv_atlas<Mesh>>> atlases;
+    std::vector<std::vector<diffuv::Patch_result<Mesh>>> results;
+    for(std::size_t threads : {1u, 2u, 0u}) {
+      atlases.push_back(std::make_unique<diffuv::Uv_atlas<Mesh>>(cow));
+      results.push_back(paper ? diffuv::parameterize_patches<diffuv::Graph_distance_tag>(cow, cow.points(), mp.seg, *atlases.back(), diffuv::Patch_parameterization_options{diffuv::Repair_options{false}, nullptr, true, threads})
+                              : diffuv::parameterize_patches<diffuv::Default_distance_tag>(cow, cow.points(), mp.seg, *atlases.back(), diffuv::Patch_parameterization_options{diffuv::Repair_options(), nullptr, true, threads}));
+    }
+    for(std::size_t k = 1; k < atlases.size(); ++k) {
+      ASSERT_EQ(atlases[k]->number_of_charts(), atlases[0]->number_of_charts());
+      for(std::size_t p = 0; p < results[0].size(); ++p) {
+        EXPECT_EQ(results[k][p].status.code, results[0][p].status.code);
+        EXPECT_EQ(results[k][p].chart, results[0][p].chart);
+        EXPECT_EQ(results[k][p].repair.moved_vertices, results[0][p].repair.moved_vertices);
+        EXPECT_EQ(results[k][p].sides.corners, results[0][p].sides.corners);
+      }
+      for(std::size_t c = 0; c < atlases[0]->number_of_charts(); ++c) {
+        EXPECT_EQ(atlases[k]->chart(c).vertices, atlases[0]->chart(c).vertices) << (paper ? "paper" : "default");
+        EXPECT_EQ(atlases[k]->chart(c).uv, atlases[0]->chart(c).uv) << (paper ? "paper" : "default");
+      }
+    }
+  }
+}
+
+// A disc mesh is one patch: the paper's method runs its four passes on two
+// threads instead; the same coordinates bit for bit.
+TEST(ParallelPatches, FourPassesOfOnePatchInParallelGiveTheSameCoordinates)
+{
+  const Mesh& disc = cgal_mesh("nefertiti.off");
+  Seg seg;
+  ASSERT_TRUE(diffuv::disc_patches(disc, disc.points(), {}, seg).ok());
+  ASSERT_EQ(seg.number_of_patches(), 1u);
+  std::vector<std::unique_ptr<diffuv::Uv_atlas<Mesh>>> atlases;
+  for(std::size_t threads : {1u, 2u}) {
+    atlases.push_back(std::make_unique<diffuv::Uv_atlas<Mesh>>(disc));
+    const auto r = diffuv::parameterize_patches<diffuv::Graph_distance_tag>(disc, disc.points(), seg, *atlases.back(), diffuv::Patch_parameterization_options{diffuv::Repair_options{false}, nullptr, true, threads});
+    ASSERT_TRUE(r.front().status.ok()) << threads;
+  }
+  EXPECT_EQ(atlases[1]->chart(0).vertices, atlases[0]->chart(0).vertices);
+  EXPECT_EQ(atlases[1]->chart(0).uv, atlases[0]->chart(0).uv);
+}
+
+
+} // namespace
