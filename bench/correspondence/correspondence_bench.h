@@ -77,8 +77,10 @@ enum class Distance { fmm, graph, exact };
 
 struct Atlas_recipe {
   Distance distance = Distance::fmm;
-  int repair = -1;           // --repair / --no-repair: 1 / 0; -1 keeps the library's default (Labelled_atlas_options)
-  bool sub_patches = false;  // --sub-patches: regions with 3 or 5..9 runs split into four-sided sectors
+  // --repair / --no-repair: 1 / 0; -1 keeps the library's default (Labelled_atlas_options).
+  int repair = -1;
+  // --sub-patches: regions with 3 or 5..9 runs are split into four-sided sectors (split_regions_into_quads()).
+  bool sub_patches = false;
 };
 
 /// Builds the labelled atlas `runs` times; returns the last one and the median

@@ -5,6 +5,8 @@
 
 #include "correspondence/geodesic_distance.h"
 
+#include <diffuv/graph/distance_tags.h>
+
 #include <CGAL/Polygon_mesh_processing/measure.h>
 
 #include <iostream>
