@@ -6,6 +6,8 @@
 #ifndef DIFFUV_LAYOUT_INTERNAL_LOCAL_REGION_H
 #define DIFFUV_LAYOUT_INTERNAL_LOCAL_REGION_H
 
+#include <diffuv/internal/lazy_dijkstra.h>
+
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/properties.h>
 #include <CGAL/number_utils.h>
@@ -66,24 +68,9 @@ struct Local_region {
   void dijkstra(const std::vector<int>& sources, std::vector<double>& dist) const
   {
     dist.assign(verts.size(), std::numeric_limits<double>::infinity());
-    using Entry = std::pair<double, int>;
-    std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
-    for(int s : sources) {
-      dist[s] = 0;
-      queue.emplace(0., s);
-    }
-    while(!queue.empty()) {
-      const auto [d, i] = queue.top();
-      queue.pop();
-      if(d > dist[i]) continue;
-      for(int j : neighbours[i]) {
-        const double nd = d + length(i, j);
-        if(nd < dist[j]) {
-          dist[j] = nd;
-          queue.emplace(nd, j);
-        }
-      }
-    }
+    lazy_dijkstra(sources, dist, [this](int i, auto&& relax) {
+      for(int j : neighbours[i]) relax(j, length(i, j));
+    });
   }
 };
 
