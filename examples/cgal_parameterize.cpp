@@ -72,12 +72,7 @@ int main(int argc, char** argv)
       std::cerr << "Error: " << e.what() << std::endl;
       return EXIT_FAILURE;
     }
-    if(corners.size() != 4) {
-      std::cerr << "Error: " << corner_file << ": four corner vertices are needed, " << corners.size() << " given"
-                << std::endl;
-      return EXIT_FAILURE;
-    }
-    parameterizer = Parameterizer(corners[0], corners[1], corners[2], corners[3]);
+    parameterizer = Parameterizer(corners); // any other number than four: reported by parameterize()
   }
 
   // The 2D points of the uv parametrisation will be written into this map
