@@ -11,8 +11,13 @@ comment on the line before the block's fence:
 
 Each FILE#NAME is the text between the two lines `// [NAME]` of FILE,
 without the indentation its lines share; the block must be these parts in
-order, separated by one empty line. Usage: check_snippets.py [ROOT]
-(CTest 'snippets'). Exit status 1, with a diff, when a block differs.
+order, separated by one empty line.
+
+It also checks that every `diffuv` command of scripts/readme_images.sh (the
+lines `run "$diffuv" ARGS`, which make the pictures) is written in README.md
+or doc/*.md as `diffuv ARGS`, so that the text next to a picture states the
+command that made it. Usage: check_snippets.py [ROOT] (CTest 'snippets').
+Exit status 1, with a diff or the command, when something differs.
 """
 import difflib
 import glob
@@ -69,6 +74,30 @@ def check(root, md):
     return count, errors
 
 
+PICTURE_COMMAND = re.compile(r'^run "\$diffuv" (.+)$')
+
+
+def check_picture_commands(root, files):
+    """Each `diffuv ...` command of scripts/readme_images.sh is written, as it
+    runs, in README.md or doc/*.md (between backticks, line breaks as spaces)."""
+    text = ""
+    for md in files:
+        with open(os.path.join(root, md), encoding="utf-8") as f:
+            text += " ".join(f.read().split()) + " "
+    script = "scripts/readme_images.sh"
+    errors, count = [], 0
+    with open(os.path.join(root, script), encoding="utf-8") as f:
+        for number, line in enumerate(f, 1):
+            m = PICTURE_COMMAND.match(line.strip())
+            if not m:
+                continue
+            count += 1
+            command = "`diffuv " + " ".join(m.group(1).split()) + "`"
+            if command not in text:
+                errors.append(f"{script}:{number}: {command} is not written in README.md or doc/*.md")
+    return count, errors
+
+
 def main():
     root = sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), "..")
     files = ["README.md"] + sorted(os.path.relpath(p, root) for p in glob.glob(os.path.join(root, "doc", "*.md")))
@@ -77,11 +106,14 @@ def main():
         n, e = check(root, md)
         total += n
         errors += e
+    commands, e = check_picture_commands(root, files)
+    errors += e
     for e in errors:
         print(e, file=sys.stderr)
     if errors:
         return 1
-    print(f"check_snippets: {total} code blocks equal to the source they show")
+    print(f"check_snippets: {total} code blocks equal to the source they show; "
+          f"the {commands} commands of scripts/readme_images.sh written as they run")
     return 0
 
 
