@@ -15,6 +15,11 @@
 #                       generator the consumer keeps its default (empty) build
 #                       type: unoptimized, the quickest to compile.
 #   COMPILER_LAUNCHER   e.g. ccache (may be empty)
+#   EXAMPLE_SOURCE      optional: an example of examples/, copied into the
+#                       consumer's build tree and built there as diffuv_example
+#   EXAMPLE_MESH        with EXAMPLE_SOURCE: the mesh file to run it on; it is
+#                       also run without one in an empty folder, where it must
+#                       fail with its usage message
 cmake_minimum_required(VERSION 3.16)
 
 foreach(var DIFFUV_BUILD_DIR CONSUMER_SOURCE_DIR INSTALL_PREFIX CONSUMER_BUILD_DIR CXX_COMPILER GENERATOR)
@@ -61,6 +66,12 @@ set(configure_args
 if(COMPILER_LAUNCHER)
   list(APPEND configure_args "-DCMAKE_CXX_COMPILER_LAUNCHER=${COMPILER_LAUNCHER}")
 endif()
+if(EXAMPLE_SOURCE)
+  get_filename_component(example_name "${EXAMPLE_SOURCE}" NAME)
+  set(example_copy "${CONSUMER_BUILD_DIR}/copied-example/${example_name}")
+  file(COPY "${EXAMPLE_SOURCE}" DESTINATION "${CONSUMER_BUILD_DIR}/copied-example")
+  list(APPEND configure_args "-DDIFFUV_EXAMPLE_SOURCE=${example_copy}")
+endif()
 run_step(configure "${CMAKE_COMMAND}" ${configure_args})
 
 # 3. Build it.
@@ -72,3 +83,21 @@ if(NOT EXISTS "${program}" AND CONFIG AND EXISTS "${CONSUMER_BUILD_DIR}/${CONFIG
   set(program "${CONSUMER_BUILD_DIR}/${CONFIG}/diffuv_consumer")
 endif()
 run_step(run "${program}")
+
+# 5. The copied example: on the mesh given, and without one in an empty
+#    folder, where it must say how to call it rather than crash or succeed.
+if(EXAMPLE_SOURCE)
+  set(example "${CONSUMER_BUILD_DIR}/diffuv_example")
+  if(NOT EXISTS "${example}" AND CONFIG AND EXISTS "${CONSUMER_BUILD_DIR}/${CONFIG}/diffuv_example")
+    set(example "${CONSUMER_BUILD_DIR}/${CONFIG}/diffuv_example")
+  endif()
+  set(empty "${CONSUMER_BUILD_DIR}/empty-folder")
+  file(MAKE_DIRECTORY "${empty}")
+  run_step(example "${example}" "${EXAMPLE_MESH}")
+  execute_process(COMMAND "${example}" WORKING_DIRECTORY "${empty}" RESULT_VARIABLE rc ERROR_VARIABLE err OUTPUT_QUIET)
+  string(STRIP "${err}" err)
+  if(rc STREQUAL "0" OR NOT err MATCHES "^Usage: ")
+    message(FATAL_ERROR "[consumer] the example without a mesh, in an empty folder: exit ${rc}, stderr: ${err}")
+  endif()
+  message(STATUS "[consumer] example without a mesh: exit ${rc}, ${err}")
+endif()

@@ -39,11 +39,31 @@ typedef boost::associative_property_map<UV_uhm>            UV_pmap;
 
 namespace SMP = CGAL::Surface_mesh_parameterization;
 
+// The files read when none are given: CGAL's, from the data folder that
+// examples/CMakeLists.txt names (DIFFUV_DEFAULT_DATA_DIR) in diffuv's build;
+// a copy of this file built elsewhere looks for them in the current folder
+// (CGAL's meshes: data/meshes/ in libcgal-demo's
+// /usr/share/doc/libcgal-dev/data.tar.gz).
+#ifdef DIFFUV_DEFAULT_DATA_DIR
+static const char* const default_mesh = DIFFUV_DEFAULT_DATA_DIR "/meshes/nefertiti.off";
+static const char* const default_selection = DIFFUV_DEFAULT_DATA_DIR "/selections/square_corners.selection.txt";
+#else
+static const char* const default_mesh = "nefertiti.off";
+static const char* const default_selection = "square_corners.selection.txt";
+#endif
+
 int main(int argc, char** argv)
 {
-  const std::string data = DIFFUV_DEFAULT_DATA_DIR;
-  const std::string mesh_file = argc > 1 ? argv[1] : data + "/meshes/nefertiti.off";
-  const std::string corner_file = argc > 2 ? argv[2] : data + "/selections/square_corners.selection.txt";
+  const std::string mesh_file = argc > 1 ? argv[1] : default_mesh;
+  const std::string corner_file = argc > 2 ? argv[2] : default_selection;
+  const char* const missing = argc < 2 && !std::ifstream(default_mesh)        ? default_mesh
+                              : argc < 3 && !std::ifstream(default_selection) ? default_selection
+                                                                              : nullptr;
+  if(missing) {
+    std::cerr << "Usage: cgal_parameterize [mesh.off [corners.selection.txt | auto]]\n"
+              << "(the default " << missing << " is not there)\n";
+    return EXIT_FAILURE;
+  }
 
   std::ifstream in(mesh_file);
   PolyMesh sm;
@@ -72,12 +92,7 @@ int main(int argc, char** argv)
       std::cerr << "Error: " << e.what() << std::endl;
       return EXIT_FAILURE;
     }
-    if(corners.size() != 4) {
-      std::cerr << "Error: " << corner_file << ": four corner vertices are needed, " << corners.size() << " given"
-                << std::endl;
-      return EXIT_FAILURE;
-    }
-    parameterizer = Parameterizer(corners[0], corners[1], corners[2], corners[3]);
+    parameterizer = Parameterizer(corners); // any other number than four: reported by parameterize()
   }
 
   // The 2D points of the uv parametrisation will be written into this map

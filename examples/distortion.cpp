@@ -9,14 +9,31 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 
+#include <fstream>
 #include <iostream>
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Mesh = CGAL::Surface_mesh<Kernel::Point_3>;
 
+// The files read when none are given: CGAL's, from the data folder that
+// examples/CMakeLists.txt names (DIFFUV_DEFAULT_DATA_DIR) in diffuv's build;
+// a copy of this file built elsewhere looks for them in the current folder
+// (CGAL's meshes: data/meshes/ in libcgal-demo's
+// /usr/share/doc/libcgal-dev/data.tar.gz).
+#ifdef DIFFUV_DEFAULT_DATA_DIR
+static const char* const default_mesh = DIFFUV_DEFAULT_DATA_DIR "/meshes/three_peaks.off";
+#else
+static const char* const default_mesh = "three_peaks.off";
+#endif
+
 int main(int argc, char** argv)
 {
-  const std::string file = argc > 1 ? argv[1] : std::string(DIFFUV_DEFAULT_DATA_DIR) + "/meshes/three_peaks.off";
+  if(argc < 2 && !std::ifstream(default_mesh)) {
+    std::cerr << "Usage: distortion [disc_mesh.off]\n"
+              << "(no mesh given, and the default " << default_mesh << " is not there)\n";
+    return EXIT_FAILURE;
+  }
+  const std::string file = argc > 1 ? argv[1] : default_mesh;
   Mesh mesh;
   try {
     diffuv::read_triangle_mesh(file, mesh);

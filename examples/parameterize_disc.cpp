@@ -11,17 +11,38 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 
+#include <fstream>
 #include <iostream>
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Mesh = CGAL::Surface_mesh<Kernel::Point_3>;
 using vertex_descriptor = boost::graph_traits<Mesh>::vertex_descriptor;
 
+// The files read when none are given: CGAL's, from the data folder that
+// examples/CMakeLists.txt names (DIFFUV_DEFAULT_DATA_DIR) in diffuv's build;
+// a copy of this file built elsewhere looks for them in the current folder
+// (CGAL's meshes: data/meshes/ in libcgal-demo's
+// /usr/share/doc/libcgal-dev/data.tar.gz).
+#ifdef DIFFUV_DEFAULT_DATA_DIR
+static const char* const default_mesh = DIFFUV_DEFAULT_DATA_DIR "/meshes/nefertiti.off";
+static const char* const default_selection = DIFFUV_DEFAULT_DATA_DIR "/selections/square_corners.selection.txt";
+#else
+static const char* const default_mesh = "nefertiti.off";
+static const char* const default_selection = "square_corners.selection.txt";
+#endif
+
 int main(int argc, char** argv)
 {
-  const std::string data = DIFFUV_DEFAULT_DATA_DIR;
-  const std::string mesh_file = argc > 1 ? argv[1] : data + "/meshes/nefertiti.off";
-  const std::string corner_file = argc > 2 ? argv[2] : data + "/selections/square_corners.selection.txt";
+  const std::string mesh_file = argc > 1 ? argv[1] : default_mesh;
+  const std::string corner_file = argc > 2 ? argv[2] : default_selection;
+  const char* const missing = argc < 2 && !std::ifstream(default_mesh)        ? default_mesh
+                              : argc < 3 && !std::ifstream(default_selection) ? default_selection
+                                                                              : nullptr;
+  if(missing) {
+    std::cerr << "Usage: parameterize_disc [mesh.off [corners.selection.txt]]\n"
+              << "(the default " << missing << " is not there)\n";
+    return EXIT_FAILURE;
+  }
 
   Mesh mesh;
   std::vector<vertex_descriptor> corners;

@@ -57,11 +57,31 @@ typedef boost::graph_traits<Mesh>::halfedge_descriptor halfedge_descriptor;
 
 namespace SMP = CGAL::Surface_mesh_parameterization;
 
+// The files read when none are given: CGAL's, from the data folder that
+// examples/CMakeLists.txt names (DIFFUV_DEFAULT_DATA_DIR) in diffuv's build;
+// a copy of this file built elsewhere looks for them in the current folder
+// (CGAL's meshes: data/meshes/ in libcgal-demo's
+// /usr/share/doc/libcgal-dev/data.tar.gz).
+#ifdef DIFFUV_DEFAULT_DATA_DIR
+static const char* const default_mesh = DIFFUV_DEFAULT_DATA_DIR "/meshes/blob.off";
+static const char* const default_selection = DIFFUV_DEFAULT_DATA_DIR "/selections/blob.selection.txt";
+#else
+static const char* const default_mesh = "blob.off";
+static const char* const default_selection = "blob.selection.txt";
+#endif
+
 int main(int argc, char** argv)
 {
-  const std::string data = DIFFUV_DEFAULT_DATA_DIR;
-  const std::string mesh_file = argc > 1 ? argv[1] : data + "/meshes/blob.off";
-  const std::string seam_file = argc > 2 ? argv[2] : data + "/selections/blob.selection.txt";
+  const std::string mesh_file = argc > 1 ? argv[1] : default_mesh;
+  const std::string seam_file = argc > 2 ? argv[2] : default_selection;
+  const char* const missing = argc < 2 && !std::ifstream(default_mesh)        ? default_mesh
+                              : argc < 3 && !std::ifstream(default_selection) ? default_selection
+                                                                              : nullptr;
+  if(missing) {
+    std::cerr << "Usage: seam_mesh [mesh.off [seams.selection.txt]]\n"
+              << "(the default " << missing << " is not there)\n";
+    return EXIT_FAILURE;
+  }
 
   std::ifstream in_mesh(mesh_file);
   PolyMesh sm;

@@ -646,6 +646,44 @@ TEST(CgalParameterizer, BadCornersAndShortOrNonTriangleBorders)
   EXPECT_EQ(automatic.status().code, diffuv::Status_code::not_triangle_mesh);
 }
 
+TEST(CgalParameterizer, CornerListsOfAnotherLengthThanFourAreReported)
+{
+  // A selection of three corners (or five, or none) given as a list: the
+  // count is reported, nothing is read past the list, nothing is written.
+  Mesh mesh = cgal_mesh("nefertiti.off");
+  auto uv = mesh.add_property_map<vertex_descriptor, Point_2>("v:uv", Point_2(-7, -7)).first;
+  const halfedge_descriptor bhd = PMP::longest_border(mesh).first;
+  const std::vector<vertex_descriptor> c = selection_corners("square_corners.selection.txt");
+  ASSERT_EQ(c.size(), 4u);
+  vertex_descriptor fifth = Mesh::null_vertex();
+  for(vertex_descriptor v : vertices(mesh))
+    if(is_border(v, mesh) && std::find(c.begin(), c.end(), v) == c.end()) fifth = v;
+  ASSERT_NE(fifth, Mesh::null_vertex());
+
+  for(const std::vector<vertex_descriptor>& corners :
+      {std::vector<vertex_descriptor>{c[0], c[1], c[2]}, std::vector<vertex_descriptor>{},
+       std::vector<vertex_descriptor>{c[0], c[1], c[2], c[3], fifth}}) {
+    Parameterizer listed(corners);
+    EXPECT_TRUE(listed.corners_given());
+    EXPECT_EQ(SMP::parameterize(mesh, listed, bhd, uv), SMP::ERROR_NON_CONVEX_BORDER);
+    EXPECT_EQ(listed.status().code, diffuv::Status_code::corner_count);
+    EXPECT_EQ(listed.status().what(),
+              "exactly four corner vertices are needed (" + std::to_string(corners.size()) + " given)");
+    EXPECT_TRUE(listed.corners().empty());
+  }
+  for(vertex_descriptor v : vertices(mesh)) EXPECT_EQ(uv[v], Point_2(-7, -7));
+
+  // Four listed: the same map as the four corners given one by one.
+  Parameterizer listed(c), one_by_one(c[0], c[1], c[2], c[3]);
+  ASSERT_EQ(SMP::parameterize(mesh, listed, bhd, uv), SMP::OK) << listed.status().what();
+  std::vector<Point_2> first;
+  for(vertex_descriptor v : vertices(mesh)) first.push_back(uv[v]);
+  ASSERT_EQ(SMP::parameterize(mesh, one_by_one, bhd, uv), SMP::OK);
+  std::size_t i = 0;
+  for(vertex_descriptor v : vertices(mesh)) EXPECT_EQ(uv[v], first[i++]);
+  EXPECT_EQ(listed.corners(), one_by_one.corners());
+}
+
 TEST(CgalParameterizer, ErrorCodesAndMessages)
 {
   EXPECT_EQ(diffuv::to_cgal_error_code(diffuv::Status_code::ok), SMP::OK);

@@ -14,6 +14,8 @@
 #include <numeric>
 #include <random>
 #include <sstream>
+#include <stdexcept>
+#include <string>
 
 namespace {
 
@@ -296,6 +298,36 @@ TEST(DiffusionCoordinates, EmptySideUnreachableAndOppositeSides)
   EXPECT_EQ(e.detail, "side v2");
 }
 
+TEST(DiffusionCoordinates, ASideVertexThatIsNotOfTheGraphIsRefused)
+{
+  // A side naming a vertex past the graph's: refused before a distance run
+  // indexes its arrays by it, for every distance backend.
+  const std::size_t n = 5;
+  const Mesh grid = make_grid(n, n);
+  Atlas atlas(grid);
+  diffuv::Disc_parameterization_report<Mesh> report;
+  ASSERT_TRUE(diffuv::parameterize_disc(grid, grid.points(), grid_corners(n, n), atlas, {}, &report).ok());
+  Sides sides = report.sides;
+  const std::size_t far = num_vertices(grid) + 1000000;
+  sides.u2.push_back(vertex_descriptor(Mesh::size_type(far)));
+  std::vector<Point_2> uv(num_vertices(grid), Point_2(-7, -7));
+  auto map = boost::make_iterator_property_map(uv.begin(), get(boost::vertex_index, grid));
+  const std::string expected = "Diffusion_coordinates::compute: a vertex of side u2 (index " + std::to_string(far) +
+                               ") is not a vertex of the graph (" + std::to_string(num_vertices(grid)) + " vertices)";
+  auto refused = [&](auto tag) {
+    try {
+      diffuv::Diffusion_coordinates<Mesh, decltype(tag)> coordinates(grid);
+      coordinates.compute(sides, diffuv::edge_length_map(grid), map);
+    } catch(const std::out_of_range& e) {
+      return std::string(e.what());
+    }
+    return std::string("no exception");
+  };
+  EXPECT_EQ(refused(diffuv::Graph_distance_tag()), expected);
+  EXPECT_EQ(refused(diffuv::Fmm_distance_tag()), expected);
+  for(const Point_2& p : uv) EXPECT_EQ(p, Point_2(-7, -7));
+}
+
 // ---- whole disc meshes -------------------------------------------------------------------
 
 TEST(ParameterizeDisc, NefertitiWithCgalSquareCorners)
@@ -378,6 +410,24 @@ TEST(ParameterizeDisc, FailuresLeaveTheAtlasEmpty)
   EXPECT_EQ(diffuv::parameterize_disc(mesh, mesh.points(), {vertex_descriptor(133), vertex_descriptor(8)}, other).code,
             diffuv::Status_code::corner_count);
   EXPECT_EQ(other.number_of_charts(), 0u);
+}
+
+TEST(ParameterizeDisc, AnAtlasOfAnotherMeshIsRefused)
+{
+  // The atlas holds the mesh it maps; charts of nefertiti's faces in an atlas
+  // of mushroom (larger, so nothing would even be written past its arrays)
+  // would describe faces mushroom does not have.
+  const Mesh& mesh = cgal_mesh("nefertiti.off");
+  const Mesh& other = cgal_mesh("mushroom.off");
+  ASSERT_GT(num_faces(other), num_faces(mesh));
+  Atlas atlas(other);
+  try {
+    diffuv::parameterize_disc(mesh, mesh.points(), {}, atlas);
+    ADD_FAILURE() << "no exception";
+  } catch(const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(), "parameterize_disc: the atlas maps another mesh");
+  }
+  EXPECT_EQ(atlas.number_of_charts(), 0u);
 }
 
 } // namespace

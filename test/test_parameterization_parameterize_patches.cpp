@@ -24,6 +24,7 @@
 #include <limits>
 #include <memory>
 #include <numeric>
+#include <stdexcept>
 #include <random>
 #include <set>
 #include <string>
@@ -168,6 +169,62 @@ TEST(ParallelPatches, FourPassesOfOnePatchInParallelGiveTheSameCoordinates)
   }
   EXPECT_EQ(atlases[1]->chart(0).vertices, atlases[0]->chart(0).vertices);
   EXPECT_EQ(atlases[1]->chart(0).uv, atlases[0]->chart(0).uv);
+}
+
+
+// One patch holding every face of `m`, as `diffuv param --corners` makes it.
+Seg whole_mesh_patch(const Mesh& m)
+{
+  Seg seg;
+  seg.face_patch.assign(num_faces(m), 0);
+  seg.patch_label = {0};
+  seg.patch_part = {0};
+  seg.patch_faces = {std::vector<face_descriptor>(faces(m).begin(), faces(m).end())};
+  return seg;
+}
+
+TEST(ParameterizePatches, InputsThatDoNotFitTheMeshAreRefused)
+{
+  const Mesh small = make_grid(4, 4), large = make_grid(6, 6);
+  auto refusal = [](auto call) -> std::string {
+    try {
+      call();
+    } catch(const std::invalid_argument& e) {
+      return e.what();
+    }
+    return "no exception";
+  };
+  {
+    diffuv::Uv_atlas<Mesh> atlas(small);
+    const auto results = diffuv::parameterize_patches(small, small.points(), whole_mesh_patch(small), atlas);
+    ASSERT_EQ(results.size(), 1u);
+    EXPECT_TRUE(results[0].status.ok()) << results[0].status.what();
+  }
+  diffuv::Uv_atlas<Mesh> other(large);
+  EXPECT_EQ(refusal([&] { diffuv::parameterize_patches(small, small.points(), whole_mesh_patch(small), other); }),
+            "parameterize_patches: the atlas maps another mesh");
+  EXPECT_EQ(other.number_of_charts(), 0u);
+
+  diffuv::Uv_atlas<Mesh> atlas(small);
+  auto refusal_of = [&](const Seg& seg, const diffuv::Patch_parameterization_options& options = {}) {
+    return refusal([&] { diffuv::parameterize_patches(small, small.points(), seg, atlas, options); });
+  };
+  EXPECT_EQ(refusal_of(whole_mesh_patch(large)), "parameterize_patches: the segmentation has 72 face entries, the mesh 32 faces");
+  Seg unlabelled = whole_mesh_patch(small);
+  unlabelled.patch_label.clear();
+  EXPECT_EQ(refusal_of(unlabelled), "parameterize_patches: the segmentation has 1 patch but 0 labels and 1 part number");
+  Seg corners = whole_mesh_patch(small);
+  corners.patch_corners.assign(2, Seg::no_corners());
+  EXPECT_EQ(refusal_of(corners), "parameterize_patches: the segmentation has 1 patch but 2 corner entries");
+  Seg stray = whole_mesh_patch(small);
+  stray.patch_faces[0].push_back(face_descriptor(Mesh::size_type(1000)));
+  EXPECT_EQ(refusal_of(stray), "parameterize_patches: patch 0 lists a face that is not a face of the mesh");
+  const std::vector<diffuv::Corner_names> names(2);
+  diffuv::Patch_parameterization_options following;
+  following.corner_names = &names;
+  EXPECT_EQ(refusal_of(whole_mesh_patch(small), following),
+            "parameterize_patches: options.corner_names has 2 entries, the segmentation 1 patch");
+  EXPECT_EQ(atlas.number_of_charts(), 0u);
 }
 
 

@@ -12,6 +12,8 @@
 #include <cmath>
 #include <random>
 #include <set>
+#include <stdexcept>
+#include <string>
 
 namespace {
 
@@ -216,6 +218,26 @@ TEST(Repair, ASideOutOfOrderIsRespacedByArcLength)
   EXPECT_NEAR(uv[grid_vertex(n, 4, 0)].x(), 0.4, 1e-12);
   EXPECT_EQ(uv[grid_vertex(n, 4, 0)].y(), 0.);
   EXPECT_TRUE(measure(grid, uv).injective());
+}
+
+TEST(Repair, ASideVertexThatIsNotOfThePatchIsRefused)
+{
+  // A side naming a vertex past the patch's: refused before anything is
+  // read or written through its index.
+  const std::size_t n = 6;
+  const Mesh grid = make_grid(n, n);
+  diffuv::Four_sides<vertex_descriptor> sides = grid_sides(grid, n);
+  sides.v2.insert(sides.v2.begin() + 1, vertex_descriptor(Mesh::size_type(num_vertices(grid) + 100000)));
+  std::vector<Point_2> uv = grid_uv(grid);
+  const std::vector<Point_2> before = uv;
+  try {
+    diffuv::repair_folds(grid, grid.points(), sides, boost::make_iterator_property_map(uv.begin(), get(boost::vertex_index, grid)));
+    ADD_FAILURE() << "no exception";
+  } catch(const std::out_of_range& e) {
+    EXPECT_EQ(std::string(e.what()), "repair_folds: a vertex of side v2 (index " + std::to_string(num_vertices(grid) + 100000) +
+                                         ") is not a vertex of the graph (" + std::to_string(num_vertices(grid)) + " vertices)");
+  }
+  EXPECT_EQ(uv, before);
 }
 
 TEST(Repair, OffGivesThePapersRawCoordinates)

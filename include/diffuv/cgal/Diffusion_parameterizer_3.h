@@ -2,7 +2,7 @@
 // concept, for `CGAL::Surface_mesh_parameterization::parameterize()`.
 //
 //     namespace SMP = CGAL::Surface_mesh_parameterization;
-//     diffuv::Diffusion_parameterizer_3<Mesh> parameterizer(c0, c1, c2, c3);  // or () for automatic corners
+//     diffuv::Diffusion_parameterizer_3<Mesh> parameterizer(c0, c1, c2, c3);  // or (corners), or () for automatic ones
 //     SMP::Error_code err = SMP::parameterize(mesh, parameterizer, bhd, uv_map);
 //
 // works on any triangle mesh CGAL's parameterizers take: `CGAL::Surface_mesh`,
@@ -188,11 +188,22 @@ public:
   /// (for a Seam_mesh: seam-mesh vertices, e.g. `target(h, seam_mesh)`), else
   /// `parameterize()` returns `ERROR_NON_CONVEX_BORDER`.
   Diffusion_parameterizer_3(vertex_descriptor v0, vertex_descriptor v1, vertex_descriptor v2, vertex_descriptor v3)
-    : given_corners_{v0, v1, v2, v3}, state_(std::make_shared<State>())
+    : given_corners_{v0, v1, v2, v3}, corners_given_(true), state_(std::make_shared<State>())
+  {}
+
+  /// Corners given as a list, e.g. the vertices of a selection file
+  /// (`selection_vertices()`, io/selection_file.h): four vertices, as for the
+  /// four-vertex constructor. A list of any other length (none included: the
+  /// default constructor is the one for automatic corners) is kept as given,
+  /// and `parameterize()` reports it, writing nothing: `ERROR_NON_CONVEX_BORDER`,
+  /// with `status()` `corner_count` ("exactly four corner vertices are needed
+  /// (3 given)").
+  explicit Diffusion_parameterizer_3(std::vector<vertex_descriptor> corners)
+    : given_corners_(std::move(corners)), corners_given_(true), state_(std::make_shared<State>())
   {}
 
   /// Whether the corners were given to the constructor.
-  bool corners_given() const { return !given_corners_.empty(); }
+  bool corners_given() const { return corners_given_; }
 
   /// The detailed outcome of the last `parameterize()` call of this object or
   /// of a copy of it (`ok` before any call).
@@ -241,6 +252,8 @@ private:
   Status run(const TriangleMesh& mesh, halfedge_descriptor bhd, VertexUVMap uvmap, VertexParameterizedMap vpmap)
   {
     typedef boost::graph_traits<TriangleMesh> GT;
+    if(corners_given_ && given_corners_.size() != 4)
+      return Status(Status_code::corner_count, std::to_string(given_corners_.size()) + " given");
     if(bhd == GT::null_halfedge())
       return Status(Status_code::no_border, "the border halfedge given is null (a closed mesh has none)");
     face_descriptor seed = face(bhd, mesh);
@@ -330,7 +343,8 @@ private:
     return status;
   }
 
-  std::vector<vertex_descriptor> given_corners_; // empty: automatic
+  std::vector<vertex_descriptor> given_corners_; // as given; unused unless corners_given_
+  bool corners_given_ = false;                   // false: automatic corners
   std::shared_ptr<State> state_;
 };
 

@@ -20,6 +20,8 @@
 
 #include <array>
 #include <cstddef>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace diffuv {
@@ -62,6 +64,28 @@ struct Four_sides {
     return s == Side::v1 ? v1 : s == Side::u2 ? u2 : s == Side::v2 ? v2 : u1;
   }
 };
+
+namespace internal {
+
+// Throws std::out_of_range, naming `function` and the side, if a vertex of
+// `sides` has an index (in `index`) outside [0, vertex_count): it is then not
+// a vertex of the graph the sides are used on, and indexing by it would read
+// or write past the graph's arrays.
+template <class VertexDescriptor, class VertexIndexMap>
+void check_side_vertices(const Four_sides<VertexDescriptor>& sides, VertexIndexMap index, std::size_t vertex_count,
+                         const char* function)
+{
+  for(Side s : all_sides)
+    for(const VertexDescriptor& v : sides[s]) {
+      const std::size_t i = static_cast<std::size_t>(get(index, v));
+      if(i >= vertex_count)
+        throw std::out_of_range(std::string(function) + ": a vertex of side " + side_name(s) + " (index " +
+                                std::to_string(i) + ") is not a vertex of the graph (" + std::to_string(vertex_count) +
+                                " vertices)");
+    }
+}
+
+} // namespace internal
 
 } // namespace diffuv
 

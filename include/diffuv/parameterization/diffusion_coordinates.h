@@ -75,6 +75,8 @@ public:
   ///          `unreachable_vertices` if some vertex is not reached from a side (their
   ///          coordinates follow `diffusion_ratio()`: NaN if reached from neither side
   ///          of a pair); `ok` otherwise
+  /// \throws std::out_of_range if a side vertex's index is not below
+  ///         `num_vertices(g)` (not a vertex of the graph); nothing is computed
   ///
   /// \param parallel_passes run the four distance passes on two threads
   ///        (oneTBB; ignored without it). Each pass then has its own engine, so
@@ -84,6 +86,7 @@ public:
   Status compute(const Four_sides<vertex_descriptor>& sides, WeightMap weight, UvMap uv, bool parallel_passes = false)
   {
     auto index = get(boost::vertex_index, graph_);
+    internal::check_side_vertices(sides, index, distance_[0].size(), "Diffusion_coordinates::compute");
     for(Side s : all_sides)
       if(sides[s].empty())
         return Status(Status_code::empty_side, std::string("side ") + side_name(s));

@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <array>
+#include <stdexcept>
 #include <vector>
 
 namespace diffuv {
@@ -55,6 +56,7 @@ struct Disc_parameterization_report {
 ///        input only) is kept and reported there (`repair.remaining_folded_faces`), not an error
 /// \returns the first problem met (not a disc, bad corners, ...) or `ok`; on failure
 ///          `atlas` is unchanged
+/// \throws std::invalid_argument if `atlas` maps another mesh than `tm`
 template <class DistanceTag = Default_distance_tag, class HeapTag = Fibonacci_heap_tag, class TriangleMesh,
           class VertexPointMap>
 Status parameterize_disc(const TriangleMesh& tm, VertexPointMap vpm,
@@ -64,6 +66,7 @@ Status parameterize_disc(const TriangleMesh& tm, VertexPointMap vpm,
 {
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
   using Point_2 = typename Uv_atlas<TriangleMesh>::Point_2;
+  if(&atlas.mesh() != &tm) throw std::invalid_argument("parameterize_disc: the atlas maps another mesh");
 
   Status status = check_disc(tm);
   if(!status) return status;

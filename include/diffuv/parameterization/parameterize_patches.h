@@ -27,6 +27,8 @@
 
 #include <chrono>
 #include <cstddef>
+#include <stdexcept>
+#include <string>
 #include <type_traits>
 #include <vector>
 
@@ -99,6 +101,40 @@ struct Patch_parameterization_options {
   std::size_t threads = 0;
 };
 
+namespace internal {
+
+// The preconditions of parameterize_patches() (see its \throws).
+template <class TriangleMesh>
+void check_patch_inputs(const TriangleMesh& tm, const Segmentation<TriangleMesh>& seg,
+                        const Uv_atlas<TriangleMesh>& atlas, const Patch_parameterization_options& options)
+{
+  auto fail = [](const std::string& what) { throw std::invalid_argument("parameterize_patches: " + what); };
+  if(&atlas.mesh() != &tm) fail("the atlas maps another mesh");
+  const std::size_t faces_of_mesh = static_cast<std::size_t>(num_faces(tm)), patches = seg.number_of_patches();
+  auto count_text = [](std::size_t n, const std::string& one, const std::string& many = "") {
+    return std::to_string(n) + " " + (n == 1 ? one : many.empty() ? one + "s" : many);
+  };
+  const std::string segmentation_has = "the segmentation has " + count_text(patches, "patch", "patches") + " but ";
+  if(seg.face_patch.size() != faces_of_mesh)
+    fail("the segmentation has " + count_text(seg.face_patch.size(), "face entry", "face entries") + ", the mesh " +
+         count_text(faces_of_mesh, "face"));
+  if(seg.patch_label.size() != patches || seg.patch_part.size() != patches)
+    fail(segmentation_has + count_text(seg.patch_label.size(), "label") + " and " +
+         count_text(seg.patch_part.size(), "part number"));
+  if(!seg.patch_corners.empty() && seg.patch_corners.size() != patches)
+    fail(segmentation_has + count_text(seg.patch_corners.size(), "corner entry", "corner entries"));
+  auto findex = get(boost::face_index, tm);
+  for(std::size_t p = 0; p < patches; ++p)
+    for(auto f : seg.patch_faces[p])
+      if(f == boost::graph_traits<TriangleMesh>::null_face() || static_cast<std::size_t>(get(findex, f)) >= faces_of_mesh)
+        fail("patch " + std::to_string(p) + " lists a face that is not a face of the mesh");
+  if(options.corner_names && options.corner_names->size() != patches)
+    fail("options.corner_names has " + count_text(options.corner_names->size(), "entry", "entries") + ", the segmentation " +
+         count_text(patches, "patch", "patches"));
+}
+
+} // namespace internal
+
 /// Parameterizes every patch of `seg` as a chart of `atlas`: canonical sides
 /// from the neighbouring regions (`region_sides()`), then the diffusion
 /// coordinates on the patch, with edge lengths computed once for the whole
@@ -122,6 +158,12 @@ struct Patch_parameterization_options {
 /// \tparam DistanceTag the distance diffused from each side (graph/distance_tags.h)
 /// \tparam HeapTag the Dijkstra's heap (graph/heap_tags.h)
 /// \returns #P results, one per patch
+/// \throws std::invalid_argument, before anything is mapped, if `atlas` maps
+///         another mesh than `tm`, if `seg` is not a segmentation of `tm` (its
+///         `face_patch` has not one entry per face, `patch_label` or
+///         `patch_part` not one per patch, `patch_corners` neither none nor one
+///         per patch, or a patch lists a face that `tm` does not have), or if
+///         `options.corner_names` is given without one entry per patch
 template <class DistanceTag = Default_distance_tag, class HeapTag = Fibonacci_heap_tag, class TriangleMesh,
           class VertexPointMap>
 std::vector<Patch_result<TriangleMesh>> parameterize_patches(const TriangleMesh& tm, VertexPointMap vpm,
@@ -129,6 +171,7 @@ std::vector<Patch_result<TriangleMesh>> parameterize_patches(const TriangleMesh&
                                                              Uv_atlas<TriangleMesh>& atlas,
                                                              const Patch_parameterization_options& options = {})
 {
+  internal::check_patch_inputs(tm, seg, atlas, options);
   const Repair_options& repair = options.repair;
   const std::size_t threads = options.threads;
   using Patch = CGAL::Face_filtered_graph<TriangleMesh>;
@@ -145,9 +188,7 @@ std::vector<Patch_result<TriangleMesh>> parameterize_patches(const TriangleMesh&
     r.status = check_patch_disc(tm, seg, p);
     if(r.status)
       r.status = region_sides(tm, vpm, seg, p, r.sides,
-                              Region_sides_options{options.corner_names && p < options.corner_names->size()
-                                                       ? &(*options.corner_names)[p]
-                                                       : nullptr,
+                              Region_sides_options{options.corner_names ? &(*options.corner_names)[p] : nullptr,
                                                    options.move_corners_off_ears},
                               &r.side_report);
     if(!r.status) return;

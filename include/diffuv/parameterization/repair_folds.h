@@ -80,6 +80,9 @@ struct Repair_report {
 /// \param uv read-write map from vertices to 2D points, initially the diffusion coordinates
 /// \returns `ok`, or `not_injective` (detail: how many folds remain) if folds
 ///          survive even the last resort (only with numerically degenerate input)
+/// \throws std::out_of_range, when the repair is enabled, if a side vertex's
+///         index is not below `num_vertices(tm)` (not a vertex of the patch);
+///         `uv` is then unchanged
 template <class TriangleMesh, class VertexPointMap, class UvMap>
 Status repair_folds(const TriangleMesh& tm, VertexPointMap vpm,
                     const Four_sides<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& sides, UvMap uv,
@@ -95,6 +98,7 @@ Status repair_folds(const TriangleMesh& tm, VertexPointMap vpm,
 
   auto index = get(boost::vertex_index, tm);
   const std::size_t n = num_vertices(tm);
+  internal::check_side_vertices(sides, index, n, "repair_folds");
   internal::Repair_patch<TriangleMesh, Point_3> p;
   p.vertex.resize(n);
   p.xyz.resize(n);
