@@ -697,12 +697,12 @@ std::string list_text(const Range& r)
   return first ? "-" : s.str();
 }
 
-std::string pairs_text(const std::vector<std::pair<int, int>>& r)
+std::string patch_names_text(const std::vector<diffuv::Patch_key>& r)
 {
   std::ostringstream s;
   bool first = true;
   for(const auto& x : r) {
-    s << (first ? "" : " ") << "(" << x.first << "," << x.second << ")";
+    s << (first ? "" : " ") << diffuv::patch_name(x);
     first = false;
   }
   return first ? "-" : s.str();
@@ -718,8 +718,8 @@ std::string diagnose(const Mesh_case& a, const Variant& b, const Labelled& atlas
   out << "- patches: A " << a.atlas->segmentation.number_of_patches() << " (" << r.charts_a << " charts), B "
       << atlas_b.segmentation.number_of_patches() << " (" << r.charts_b << " charts); matched " << r.matched
       << "; labels only in A: " << list_text(r.match.labels_only_in_a) << "; only in B: "
-      << list_text(r.match.labels_only_in_b) << "; unmatched patches of A: " << pairs_text(r.match.unmatched_patches_a)
-      << ", of B: " << pairs_text(r.match.unmatched_patches_b) << "\n";
+      << list_text(r.match.labels_only_in_b) << "; unmatched patches of A: " << patch_names_text(r.match.unmatched_patches_a)
+      << ", of B: " << patch_names_text(r.match.unmatched_patches_b) << "\n";
   out << "- label cleaning changed " << r.cleaned_a << " faces of A, " << r.cleaned_b << " of B; patching of B: "
       << atlas_b.patching.merged << " merged, " << atlas_b.patching.cut << " cut, " << atlas_b.patching.caps_split
       << " caps split (A: " << a.atlas->patching.merged << ", " << a.atlas->patching.cut << ", "

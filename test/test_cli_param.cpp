@@ -192,4 +192,36 @@ TEST_F(Tool, AnExistingOutputFolderKeepsOtherFiles)
   EXPECT_EQ(slurp(out_dir() / "m.uv.csv").rfind("vertex,", 0), 0u);
 }
 
+// The lines of the table of patches: from the header to the totals.
+std::vector<std::string> table_lines(const std::string& out)
+{
+  std::vector<std::string> lines;
+  std::istringstream in(out.substr(out.find("\npatch ") + 1));
+  for(std::string line; std::getline(in, line);) {
+    lines.push_back(line);
+    if(line.rfind("total", 0) == 0) break;
+  }
+  return lines;
+}
+
+// Patch names are unique, and the same as other commands print (issue #19):
+// two components of one label were both "0".
+TEST_F(Tool, PatchNamesAreUnique)
+{
+  const std::string mesh = write("two.off", two_grids());
+  std::string zeros;
+  for(int f = 0; f < 16; ++f) zeros += "0\n";  // one label, two components
+  const std::string labels = write("zeros.txt", zeros);
+  const Tool_run r = run("param " + mesh + " --labels " + labels + " --layout voronoi -o " + out_dir().string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  std::vector<std::string> names;
+  for(const std::string& line : table_lines(r.out)) {
+    std::istringstream fields(line);
+    std::string patch, name;
+    fields >> patch >> name;
+    if(patch != "patch" && patch != "total") names.push_back(name);
+  }
+  EXPECT_EQ(names, (std::vector<std::string>{"0", "0#2"})) << r.out;
+}
+
 } // namespace

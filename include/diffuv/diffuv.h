@@ -43,6 +43,7 @@
 #include <diffuv/patches/corners.h>
 #include <diffuv/patches/disc_topology.h>
 #include <diffuv/patches/flat_triangles.h>
+#include <diffuv/patches/patch_names.h>
 #include <diffuv/patches/region_sides.h>
 #include <diffuv/patches/segmentation.h>
 #include <diffuv/patches/split_patches.h>

@@ -287,10 +287,10 @@ void run_correspond(const Correspond_options& o)
     std::cout << "labels only in A (not mapped): " << label_list(match.labels_only_in_a) << '\n';
   if(!match.labels_only_in_b.empty())
     std::cout << "labels only in B (nothing maps there): " << label_list(match.labels_only_in_b) << '\n';
-  auto pieces = [](const std::vector<std::pair<int, int>>& v) {
+  // Patches by name, as param's table names them.
+  auto pieces = [](const std::vector<diffuv::Patch_key>& v) {
     std::string s;
-    for(std::size_t i = 0; i < v.size() && i < 8; ++i)
-      s += (i ? ", " : "") + std::to_string(v[i].first) + "." + std::to_string(v[i].second);
+    for(std::size_t i = 0; i < v.size() && i < 8; ++i) s += (i ? ", " : "") + diffuv::patch_name(v[i]);
     if(v.size() > 8) s += ", ... (" + std::to_string(v.size()) + " in all)";
     return s;
   };
@@ -303,9 +303,9 @@ void run_correspond(const Correspond_options& o)
     if(!failed.empty()) std::cout << "on " << name << ", " << failed << '\n';
   }
   if(!match.unmatched_patches_a.empty())
-    std::cout << "patches of A without a counterpart (label.part): " << pieces(match.unmatched_patches_a) << '\n';
+    std::cout << "patches of A without a counterpart: " << pieces(match.unmatched_patches_a) << '\n';
   if(!match.unmatched_patches_b.empty())
-    std::cout << "patches of B without a counterpart (label.part): " << pieces(match.unmatched_patches_b) << '\n';
+    std::cout << "patches of B without a counterpart: " << pieces(match.unmatched_patches_b) << '\n';
   std::cout << "vertices mapped: " << mapped << " of " << na << " (" << inside << " inside a triangle of B's chart, "
             << mapped - inside << " onto its nearest point)\n"
             << "colours: " << (b_painted ? "B's vertex colours" : "B's position in its bounding box (B has no vertex colours)")

@@ -1,6 +1,8 @@
 // diffuv tool: what `param` and `render` print after a run.
 #include "report.h"
 
+#include <diffuv/patches/patch_names.h>
+
 #include <cstdio>
 #include <iostream>
 #include <string>
@@ -66,10 +68,12 @@ void print_summary(const Param_run& run, const Param_options& options)
   }
 }
 
-// One row per patch, then the totals; returns the patches' own times, summed.
+// One row per patch, named as every command names it, then the totals;
+// returns the patches' own times, summed.
 double print_table(const Param_run& run, const Param_options& options)
 {
   const Parameterization& result = run.result;
+  const std::vector<std::string> names = diffuv::patch_names(result.seg);
   std::printf("%-6s %6s %8s %8s %-10s %8s %6s %7s %5s %6s %8s %9s %9s %9s %9s %8s %9s %9s\n", "patch", "label",
               "vertices", "faces", "corners", "time_ms", "moved", "flipped", "degen", "flat", "overlaps", "angle_avg", "angle_max", "area_avg",
               "area_max", "L2", "Linf", "injective");
@@ -79,8 +83,7 @@ double print_table(const Param_run& run, const Param_options& options)
   std::size_t vertex_entries = 0, moved = 0, flat = 0;
   for(std::size_t p = 0; p < result.patches.size(); ++p) {
     const auto& r = result.patches[p];
-    const std::string label = std::to_string(result.seg.patch_label[p]) +
-                              (result.seg.patch_part[p] ? "." + std::to_string(result.seg.patch_part[p]) : "");
+    const std::string& label = names[p];
     if(!r.status) {
       std::printf("%-6zu %6s %8s %8zu  failed: %s\n", p, label.c_str(), "-", result.seg.patch_faces[p].size(),
                   r.status.what().c_str());
