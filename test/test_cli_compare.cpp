@@ -14,8 +14,7 @@ using namespace diffuv_cli_test;
 
 TEST_F(Tool, CompareRunsEveryMethodOnTheSamePatches)
 {
-  const Tool_run r = run("compare " + data_path("meshes/nefertiti.off") + " --corners " +
-                         data_path("selections/square_corners.selection.txt") + " --runs 1 -o " + out_dir().string());
+  const Tool_run r = run("compare " + nefertiti_with_square_corners() + " --runs 1 -o " + out_dir().string());
   ASSERT_EQ(r.code, 0) << r.err;
   for(const char* method : {"diffuv ", "tutte ", "mean_value ", "authalic ", "conformal ", "lscm ", "arap "}) {
     const auto at = r.out.find(std::string("\n") + method);
@@ -25,8 +24,7 @@ TEST_F(Tool, CompareRunsEveryMethodOnTheSamePatches)
     EXPECT_TRUE(fs::exists(out_dir() / ("nefertiti." + std::string(method, std::strlen(method) - 1) + ".obj")));
   }
   // The paper's raw method folds with these corners; the default does not.
-  const Tool_run raw = run("compare " + data_path("meshes/nefertiti.off") + " --corners " +
-                           data_path("selections/square_corners.selection.txt") + " --runs 1 --methods diffuv-graph-raw,diffuv");
+  const Tool_run raw = run("compare " + nefertiti_with_square_corners() + " --runs 1 --methods diffuv-graph-raw,diffuv");
   ASSERT_EQ(raw.code, 0) << raw.err;
   EXPECT_NE(raw.out.find("diffuv-graph-raw"), std::string::npos);
   EXPECT_NE(raw.out.find(" no\n"), std::string::npos) << raw.out;
@@ -63,6 +61,19 @@ TEST_F(Tool, CompareRefusesUnknownOrRepeatedMethods)
     EXPECT_EQ(r.code, 2) << methods << r.err;
     EXPECT_NE(r.err.find("--methods"), std::string::npos) << r.err;
   }
+}
+
+// A list with spaces after its commas is the list without them (issue #19:
+// "tutte, lscm" was refused, as a method named " lscm").
+TEST_F(Tool, CompareMethodsMayHaveSpacesAfterTheCommas)
+{
+  const Tool_run r = run("compare " + nefertiti_with_square_corners() + " --runs 1 --methods 'tutte, lscm'");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("\ntutte "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\nlscm "), std::string::npos) << r.out;
+  const Tool_run empty = run("compare " + data_path("meshes/nefertiti.off") + " --methods 'tutte, ,lscm'");
+  EXPECT_EQ(empty.code, 2) << empty.err;
+  EXPECT_NE(empty.err.find("unknown method ''"), std::string::npos) << empty.err;
 }
 
 } // namespace

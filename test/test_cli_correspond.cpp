@@ -13,6 +13,7 @@
 #include <fstream>
 #include <numeric>
 #include <random>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -277,6 +278,56 @@ TEST_F(Correspond, PaintedRegionsPairByColor)
   for(std::size_t i = 1; i < rows.size(); ++i)
     for(int k = 0; k < 3; ++k) worst = std::max(worst, std::abs(std::stod(rows[i][5 + k]) - b_points_[copy_of_[i - 1]][k]));
   EXPECT_LT(worst, 1e-9);
+}
+
+// What was cleaned adds up (issue #19): an island of four faces was "4 faces
+// relabelled (1 island, ...)", an island counted among faces.
+TEST_F(Correspond, CleanedFacesAddUp)
+{
+  const auto& m = diffuv_test::cgal_mesh("cow.off");
+  std::vector<int> labels;
+  std::ifstream in(labels_a_);
+  for(int l; in >> l;) labels.push_back(l);
+  // A face and its three neighbours, deep inside one region: relabelled, an island.
+  std::vector<std::size_t> island;
+  for(auto f : faces(m)) {
+    std::set<std::size_t> group = {f.idx()}, halo;
+    for(auto h : CGAL::halfedges_around_face(m.halfedge(f), m)) group.insert(m.face(m.opposite(h)).idx());
+    for(std::size_t g : group)
+      for(auto v : CGAL::vertices_around_face(m.halfedge(diffuv_test::Mesh::Face_index(static_cast<std::uint32_t>(g))), m))
+        for(auto around : CGAL::faces_around_target(m.halfedge(v), m)) halo.insert(around.idx());
+    if(std::all_of(halo.begin(), halo.end(), [&](std::size_t g) { return labels[g] == labels[f.idx()]; })) {
+      island.assign(group.begin(), group.end());
+      break;
+    }
+  }
+  ASSERT_EQ(island.size(), 4u);
+  const int other = labels[island[0]] + 1;
+  for(std::size_t g : island) labels[g] = other;
+  const std::string b = write_b(false);
+  const Tool_run r = run("correspond " + a_ + ' ' + b + " --labels-a " + write_labels(labels, "island.txt") +
+                         " --labels-b " + write_labels(b_labels_, "b.labels.txt") + " -o " + out_dir().string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("; 4 faces relabelled (4 in 1 island, 0 by border smoothing, 0 at 0 pinches))\n"),
+            std::string::npos) << r.out;
+}
+
+// Patches are named as param names them, and counts agree in number (issue
+// #19): a label in two pieces on A and one on B was "1 patches", "1 labels"
+// and "0.0".
+TEST_F(Tool, CorrespondNamesPatchesAsParamDoes)
+{
+  const std::string a = write("two.off", two_grids()), b = write("grid.off", grid_off);
+  std::string zeros_a, zeros_b;
+  for(int f = 0; f < 16; ++f) zeros_a += "0\n";
+  for(int f = 0; f < 8; ++f) zeros_b += "0\n";
+  const Tool_run r = run("correspond " + a + ' ' + b + " --labels-a " + write("a.txt", zeros_a) + " --labels-b " +
+                         write("b.txt", zeros_b) + " -o " + out_dir().string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("\nA: 18 vertices, 2 patches ("), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\nB: 9 vertices, 1 patch ("), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\nregions matched: 1 label, 1 patch\n"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\npatches of A without a counterpart: 0#2\n"), std::string::npos) << r.out;
 }
 
 } // namespace

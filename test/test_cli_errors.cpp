@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <ostream>
@@ -102,6 +103,29 @@ TEST_F(Tool, NoSubcommandOrUnknownCommandOrEmptyOutput)
   EXPECT_NE(version.out.find("diffuv"), std::string::npos);
 }
 
+// A value the tool cannot use is refused, not ignored (issue #19): a usage
+// error on one line, nothing written.
+TEST_F(Tool, ValuesTheToolCannotUseAreRefused)
+{
+  const std::string mesh = write("m.off", grid_off);
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"render " + mesh + " --size 800x600x3", "--size: expects WxH"},  // was drawn at 800x600
+      {"render " + mesh + " --size 800x", "--size: expects WxH"},
+      {"render " + mesh + " --view top --azimuth 10", "--view excludes --azimuth"},  // --view was ignored
+      {"param " + mesh + " --azimuth 10 --view front", "--view excludes --azimuth"},
+      {"correspond " + mesh + ' ' + mesh + " --labels-b " + mesh + " --transfer-labels",  // --transfer-labels was ignored
+       "--labels-b excludes --transfer-labels"},
+  };
+  for(const auto& [args, reason] : cases) {
+    const Tool_run r = run(args + " -o " + out_dir().string());
+    EXPECT_EQ(r.code, 2) << args << ": " << r.err;
+    EXPECT_EQ(r.err.rfind("diffuv: error: ", 0), 0u) << args << ": " << r.err;
+    EXPECT_NE(r.err.find(reason), std::string::npos) << args << ": " << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << args << ": " << r.err;
+    EXPECT_FALSE(fs::exists(out_dir())) << args;
+  }
+}
+
 TEST_F(Tool, OutputsNeverReplaceTheInput)
 {
   fs::copy_file(data_path("meshes/nefertiti.off"), dir_ / "nefertiti.off");
@@ -184,6 +208,10 @@ const std::vector<Catalogue_entry>& catalogue()
        {{"m.off", "OFF\n9 8 0\n0 0 0\n1 0 0\n2 0 0\n0 1 0\n1 0 0\n2 1 0\n0 2 0\n1 2 0\n2 2 0\n" + grid_faces}}, m, 0,
        "diffuv: warning: {d}/m.off: 2 faces have zero area; their (u,v) triangles may be flat (column degen)\n",
        "9 vertices, 8 faces, 2 zero-area faces\n"},
+      {"one_zero_area_face", // the inner vertex moved onto the middle of edge 0-1: one triangle collapses
+       {{"m.off", "OFF\n9 8 0\n0 0 0\n1 0 0\n2 0 0\n0 1 0\n0.5 0 0\n2 1 0\n0 2 0\n1 2 0\n2 2 0\n" + grid_faces}}, m, 0,
+       "diffuv: warning: {d}/m.off: 1 face has zero area; its (u,v) triangle may be flat (column degen)\n",
+       "9 vertices, 8 faces, 1 zero-area face\n"},
       {"duplicate_vertices_not_welded", // vertex 9 repeats vertex 4; the right half of the grid uses it
        {{"m.off", "OFF\n10 8 0\n" + grid_points + "1 1 0\n3 0 1 4\n3 0 4 3\n3 1 2 5\n3 1 5 9\n3 3 4 7\n3 3 7 6\n3 9 5 8\n3 9 8 7\n"}},
        m, 1,

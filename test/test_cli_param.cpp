@@ -19,8 +19,7 @@ using namespace diffuv_cli_test;
 
 TEST_F(Tool, NefertitiWithSquareCornersLandsOnTheUnitSquare)
 {
-  const Tool_run r = run("param " + data_path("meshes/nefertiti.off") + " --corners " +
-                    data_path("selections/square_corners.selection.txt") + " -o " + out_dir().string());
+  const Tool_run r = run("param " + nefertiti_with_square_corners() + " -o " + out_dir().string());
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("299 vertices, 562 faces"), std::string::npos) << r.out;
   const auto rows = read_csv(out_dir() / "nefertiti.uv.csv");
@@ -176,7 +175,7 @@ TEST_F(Tool, APatchThatCannotBeMappedIsReportedAndTheOthersAreWritten)
   const Tool_run none = run("param " + lone + " -o " + out_dir().string());
   EXPECT_EQ(none.code, 1);
   EXPECT_EQ(none.err, "diffuv: error: " + lone +
-                          ": 1 of 1 patches cannot be parameterized; the first: the boundary has fewer than four vertices (patch 0)\n");
+                          ": 1 of 1 patch cannot be parameterized; the first: the boundary has fewer than four vertices (patch 0)\n");
   EXPECT_FALSE(fs::exists(out_dir()));
 }
 

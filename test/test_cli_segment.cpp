@@ -33,7 +33,11 @@ TEST_F(Tool, SegmentWritesPatchesThatReadBackAsLabelsAndAsPaint)
   const Tool_run painted = run("param " + ply.string() + " -o " + (dir_ / "b").string());
   ASSERT_EQ(painted.code, 0) << painted.err;
   EXPECT_NE(painted.out.find("painted"), std::string::npos) << painted.out;
-  EXPECT_TRUE(slurp(dir_ / "b" / "cow.patches.patches.txt") == slurp(labels)); // output named after the PLY
+  // Outputs named once (issue #19): after the PLY, whose name ends in .patches already.
+  EXPECT_TRUE(slurp(dir_ / "b" / "cow.patches.txt") == slurp(labels));
+  EXPECT_TRUE(fs::exists(dir_ / "b" / "cow.patches.obj"));
+  for(const auto& e : fs::directory_iterator(dir_ / "b"))
+    EXPECT_EQ(e.path().filename().string().find("patches.patches"), std::string::npos) << e.path();
 }
 
 // Issue #5: a face left flat by its sides that no corners can mend (a small
@@ -79,6 +83,15 @@ TEST_F(Tool, PatchesOfAPolygonMeshReadBackAsLabels)
   const Tool_run param = run("param " + data_path("meshes/cube_quad.off") + " --labels " + labels.string() + " -o " +
                              (dir_ / "p").string());
   EXPECT_EQ(param.code, 0) << param.err;
+}
+
+// Counts agree in number (issue #19): a disc was "1 patches".
+TEST_F(Tool, SegmentCountsAgreeInNumber)
+{
+  const Tool_run r = run("segment " + write("m.off", grid_off) + " -o " + out_dir().string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find(": 9 vertices, 8 faces\n1 patch (the whole disc), 8 to 8 faces each; "), std::string::npos)
+      << r.out;
 }
 
 } // namespace

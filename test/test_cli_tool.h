@@ -60,6 +60,12 @@ protected:
   fs::path out_dir() const { return dir_ / "out"; }
 };
 
+/// CGAL's nefertiti.off and its square corners, as arguments of a command.
+inline std::string nefertiti_with_square_corners()
+{
+  return data_path("meshes/nefertiti.off") + " --corners " + data_path("selections/square_corners.selection.txt");
+}
+
 inline std::vector<std::vector<std::string>> read_csv(const fs::path& p)
 {
   std::vector<std::vector<std::string>> rows;

@@ -24,7 +24,6 @@
 #include <iostream>
 #include <memory>
 #include <optional>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -63,9 +62,7 @@ struct Method {
 std::vector<Method> parse_methods(const Compare_options& o)
 {
   std::vector<Method> methods;
-  std::stringstream list(o.methods);
-  std::string name;
-  while(std::getline(list, name, ',')) {
+  for(const std::string& name : split_list(o.methods)) {
     Method m;
     m.name = name;
     if(name == "diffuv") {
@@ -258,10 +255,10 @@ void run_compare(const Compare_options& options)
     out.commit();
   }
 
-  std::cout << "diffuv compare " << in.path << ": " << num_vertices(mesh) << " vertices, " << num_faces(mesh)
-            << " faces, " << seg.number_of_patches() << (seg.number_of_patches() == 1 ? " patch" : " patches")
+  std::cout << "diffuv compare " << in.path << ": " << count_text(num_vertices(mesh), "vertex", "vertices") << ", "
+            << count_text(num_faces(mesh), "face") << ", " << count_text(seg.number_of_patches(), "patch", "patches")
             << (options.corners.empty() ? "" : " (corners from " + options.corners + ")") << "; median of "
-            << options.runs << (options.runs == 1 ? " run" : " runs") << ", times summed over patches";
+            << count_text(static_cast<std::size_t>(options.runs), "run") << ", times summed over patches";
   if(flat_triangles_handed) std::cout << "; " << flat_triangles_handed_clause(flat_triangles_handed);
   std::cout << "\n";
   std::printf("%-18s %10s %7s %7s %5s %8s %9s %9s %9s %9s %8s %9s %7s\n", "method", "time_ms", "failed", "flipped",
@@ -278,7 +275,8 @@ void run_compare(const Compare_options& options)
   for(std::size_t k = 0; k < methods.size(); ++k)
     if(results[k].failed > 0)
       std::cerr << "diffuv: warning: " << methods[k].name << " could not map " << results[k].failed << " of "
-                << seg.number_of_patches() << " patches; the first: " << results[k].first_failure << '\n';
+                << count_text(seg.number_of_patches(), "patch", "patches") << "; the first: " << results[k].first_failure
+                << '\n';
 }
 
 } // namespace

@@ -2,6 +2,8 @@
 // whoever made them (diffuv, Blender's Smart UV Project, xatlas ...).
 #include "commands.h"
 
+#include <diffuv/internal/message_text.h>
+
 #include <diffuv/io/read_obj_charts.h>
 #include <diffuv/metrics/distortion.h>
 
@@ -19,6 +21,7 @@ namespace {
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Soup = CGAL::Surface_mesh<Kernel::Point_3>;
+using diffuv::internal::count_text;
 
 struct Measure_options {
   std::string obj;
@@ -59,9 +62,9 @@ void run_measure(const Measure_options& options)
                   d.overlapping_pairs, d.angle_mean, d.area_mean, d.stretch_l2, d.stretch_linf, d.injective() ? "yes" : "no");
     total = diffuv::combined(total, d);
   }
-  std::cout << "diffuv measure " << options.obj << ": " << obj.positions.size() << " vertices, " << total.faces
-            << " textured triangles in " << obj.number_of_charts << (obj.number_of_charts == 1 ? " chart" : " charts");
-  if(obj.faces_without_uv > 0) std::cout << " (" << obj.faces_without_uv << " faces without vt)";
+  std::cout << "diffuv measure " << options.obj << ": " << count_text(obj.positions.size(), "vertex", "vertices") << ", "
+            << count_text(total.faces, "textured triangle") << " in " << count_text(obj.number_of_charts, "chart");
+  if(obj.faces_without_uv > 0) std::cout << " (" << count_text(obj.faces_without_uv, "face") << " without vt)";
   std::cout << '\n';
   std::printf("%-8s %12s %7s %5s %8s %9s %9s %8s %9s\n", "charts", "not_1-to-1", "flipped", "degen", "overlaps",
               "angle_avg", "area_avg", "L2", "Linf");

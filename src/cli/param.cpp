@@ -39,7 +39,7 @@ void run_param(const Param_options& options)
     std::cerr << "diffuv: reading " << mesh_path << " (" << file_size / 1'000'000 << " MB)" << std::endl;
   const Input_mesh in = read_input(mesh_path, options.patches);
   stages.large = in.report.vertices > 1000000;
-  stages.done("read", std::to_string(in.report.vertices) + " vertices");
+  stages.done("read", count_text(in.report.vertices, "vertex", "vertices"));
 
   std::vector<Mesh::Vertex_index> corners;
   if(!options.corners.empty())
@@ -61,8 +61,7 @@ void run_param(const Param_options& options)
                  : parameterize_with_corners(in, corners, options.corners, options.distance, repair);
     times.push_back(result.milliseconds);
   }
-  stages.add("patches", result.patches_ms,
-             std::to_string(result.seg.number_of_patches()) + (result.seg.number_of_patches() == 1 ? " patch" : " patches"));
+  stages.add("patches", result.patches_ms, count_text(result.seg.number_of_patches(), "patch", "patches"));
   stages.add("map", result.milliseconds - result.patches_ms,
              options.runs > 1 ? "last of " + std::to_string(options.runs) + " runs" : std::string());
   std::sort(times.begin(), times.end());
@@ -77,8 +76,8 @@ void run_param(const Param_options& options)
     if(!result.patches[p].status && failed++ == 0) first_failure = result.patches[p].status.what();
   if(failed > 0 && (failed == result.patches.size() || options.patches.strict))
     throw diffuv::Input_error(in.labels_path.empty() ? in.path : in.labels_path, 0,
-                              std::to_string(failed) + " of " + std::to_string(result.patches.size()) +
-                                  " patches cannot be parameterized; the first: " + first_failure);
+                              std::to_string(failed) + " of " + count_text(result.patches.size(), "patch", "patches") +
+                                  " cannot be parameterized; the first: " + first_failure);
 
   // Everything is computed before anything is written: all files or none.
   const std::vector<std::string> inputs = {in.path, options.corners, options.patches.labels};
@@ -136,7 +135,7 @@ void add_common_options(CLI::App* cmd, Param_options& o)
   cmd->add_flag("--no-repair", o.no_repair,
                 "Keep the raw diffusion coordinates, folds included (the paper's method). By default every fold is "
                 "repaired: the folded region is re-solved as a convex-combination map (see doc/quality.md)");
-  cmd->add_option("--view", o.view, "View of the picture: front, back, left, right, top or iso")
+  CLI::Option* view = cmd->add_option("--view", o.view, "View of the picture: front, back, left, right, top or iso")
       ->check(CLI::IsMember({"front", "back", "left", "right", "top", "iso"}))
       ->capture_default_str();
   const auto finite = CLI::Validator(
@@ -150,9 +149,10 @@ void add_common_options(CLI::App* cmd, Param_options& o)
       "DEGREES");
   CLI::Option* azimuth =
       cmd->add_option("--azimuth", o.azimuth,
-                      "Camera azimuth in degrees around the y axis (0: looking along -z, as front); replaces --view")
+                      "Camera azimuth in degrees around the y axis (0: looking along -z, as front); instead of --view")
           ->check(finite)
           ->check(CLI::Range(-360., 360.));
+  azimuth->excludes(view);
   cmd->add_option("--elevation", o.elevation, "Camera elevation in degrees (needs --azimuth)")
       ->check(finite)
       ->check(CLI::Range(-90., 90.))

@@ -27,18 +27,11 @@ diffuv::View parse_view(const std::string& s)
 
 std::pair<int, int> picture_size(const std::string& s)
 {
-  const auto x = s.find('x');
-  int w = 0, h = 0;
-  try {
-    if(x != std::string::npos) {
-      w = std::stoi(s.substr(0, x));
-      h = std::stoi(s.substr(x + 1));
-    }
-  } catch(const std::exception&) {
-  }
-  if(w < 16 || h < 16 || w > 8192 || h > 8192)
-    throw CLI::ValidationError("--size", "expects WxH with 16 <= W, H <= 8192, e.g. 800x600, not " + s);
-  return {w, h};
+  const auto size = parse_size(s);
+  if(!size)
+    throw CLI::ValidationError("--size", "expects WxH with " + std::to_string(smallest_picture_side) + " <= W, H <= " +
+                                             std::to_string(largest_picture_side) + ", e.g. 800x600, not " + s);
+  return *size;
 }
 
 diffuv::Image picture(const Input_mesh& in, const Parameterization& result, const std::vector<Chart_measure>& measures,

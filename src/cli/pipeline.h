@@ -33,7 +33,7 @@ struct Param_options {
   std::string distance = "fmm";
   bool no_repair = false;
   std::string view = "iso";
-  double azimuth = std::numeric_limits<double>::quiet_NaN(); // set: overrides --view
+  double azimuth = std::numeric_limits<double>::quiet_NaN(); // set: the camera's angles (refused with --view)
   double elevation = 20;
   std::string size = "800x600";
   int isolines = 10;

@@ -16,8 +16,7 @@ std::string patch_source(const diffuv::Patching_report& r, const Patch_cli_optio
   const std::string automatic =
       o.layout == "voronoi" ? "automatic (" + std::to_string(o.patches > 0 ? o.patches : 12) + " seeds to start)" : "automatic";
   if(r.components <= 1) return r.automatic ? automatic : "the whole disc";
-  std::string s = std::to_string(r.components) + " components, " + std::to_string(r.whole_components) +
-                  (r.whole_components == 1 ? " a whole disc" : " whole discs");
+  std::string s = std::to_string(r.components) + " components, " + count_text(r.whole_components, "whole disc");
   if(r.automatic) s += ", the others " + automatic;
   return s;
 }
@@ -27,7 +26,7 @@ std::string corner_rule(const diffuv::Side_report& r, bool given)
   if(given) return "given";
   if(r.chosen) return "layout";
   if(r.equal_arcs) return "arcs";
-  std::string s = std::to_string(r.runs) + " runs";
+  std::string s = count_text(r.runs, "run");
   if(r.merged) s += " -" + std::to_string(r.merged);
   if(r.split) s += " +" + std::to_string(r.split);
   if(r.moved) s += " ~" + std::to_string(r.moved);
@@ -49,11 +48,14 @@ void print_summary(const Param_run& run, const Param_options& options)
 {
   const Input_mesh& in = run.in;
   const Parameterization& result = run.result;
-  std::cout << (options.render_only ? "diffuv render " : "diffuv param ") << in.path << ": " << in.report.vertices << " vertices, " << num_faces(in.mesh) << " faces";
-  if(in.report.polygons_triangulated > 0) std::cout << " (" << in.report.polygons_triangulated << " polygons triangulated)";
-  if(in.report.degenerate_faces > 0) std::cout << ", " << in.report.degenerate_faces << " zero-area faces";
+  std::cout << (options.render_only ? "diffuv render " : "diffuv param ") << in.path << ": "
+            << count_text(in.report.vertices, "vertex", "vertices") << ", " << count_text(num_faces(in.mesh), "face");
+  if(in.report.polygons_triangulated > 0)
+    std::cout << " (" << count_text(in.report.polygons_triangulated, "polygon") << " triangulated)";
+  if(in.report.degenerate_faces > 0) std::cout << ", " << count_text(in.report.degenerate_faces, "zero-area face");
   if(in.report.isolated_vertices > 0)
-    std::cout << ", " << in.report.isolated_vertices << " isolated vertices (in no face: no (u,v))";
+    std::cout << ", " << count_text(in.report.isolated_vertices, "isolated vertex", "isolated vertices")
+              << " (in no face: no (u,v))";
   std::cout << '\n';
   if(!options.corners.empty()) {
     const auto& c = result.patches.front().sides.corners;
@@ -61,8 +63,7 @@ void print_summary(const Param_run& run, const Param_options& options)
               << ' ' << c[3].idx() << " (from " << options.corners << ")\n";
   } else {
     const auto& r = result.patching;
-    std::cout << result.seg.number_of_patches() << (result.seg.number_of_patches() == 1 ? " patch, " : " patches, ")
-              << options.distance << " distances: "
+    std::cout << count_text(result.seg.number_of_patches(), "patch", "patches") << ", " << options.distance << " distances: "
               << (!in.label_source.empty() ? in.label_source : patch_source(r, options.patches))
               << "; " << patching_clause(r, options.patches) << "\n";
   }
@@ -113,13 +114,15 @@ void print_param_report(const Param_run& run, const Param_options& options)
   const double patch_ms = print_table(run, options);
   const Input_mesh& in = run.in;
   if(in.report.degenerate_faces > 0)
-    std::cerr << "diffuv: warning: " << in.path << ": " << in.report.degenerate_faces
-              << " faces have zero area; their (u,v) triangles may be flat (column degen)\n";
+    std::cerr << "diffuv: warning: " << in.path << ": "
+              << count_text(in.report.degenerate_faces, "face has zero area; its (u,v) triangle",
+                            "faces have zero area; their (u,v) triangles")
+              << " may be flat (column degen)\n";
   if(run.failed > 0)
-    std::cerr << "diffuv: warning: " << run.failed << " of " << run.result.patches.size()
-              << " patches cannot be parameterized (see the table); their faces have no (u,v)\n";
+    std::cerr << "diffuv: warning: " << run.failed << " of " << count_text(run.result.patches.size(), "patch", "patches")
+              << " cannot be parameterized (see the table); their faces have no (u,v)\n";
   std::cout << "time: " << Stage_clock::duration(run.total_ms) << " to make and map the patches (median of "
-            << options.runs << (options.runs == 1 ? " run" : " runs") << "); the patches' own times (column time_ms) add up to "
+            << count_text(static_cast<std::size_t>(options.runs), "run") << "); the patches' own times (column time_ms) add up to "
             << Stage_clock::duration(patch_ms) << (options.threads == 1 ? "" : " over all threads") << '\n';
   std::cout << "stages: " << run.stages.summary() << '\n';
   std::cout << "wrote";

@@ -1,0 +1,89 @@
+// Unit tests of what the diffuv tool says and parses, without running it:
+// picture sizes, lists of methods, output names, patch names and counts
+// (src/cli/command_line.h, diffuv/patches/patch_names.h,
+// diffuv/internal/message_text.h).
+#include "test_data.h"
+
+#include "cli/command_line.h"
+
+#include <diffuv/internal/message_text.h>
+#include <diffuv/patches/patch_names.h>
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <optional>
+#include <set>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace {
+
+TEST(CliText, SizeIsTwoWholeNumbersJoinedByAnX)
+{
+  EXPECT_EQ(diffuv_cli::parse_size("800x600"), std::make_optional(std::make_pair(800, 600)));
+  EXPECT_EQ(diffuv_cli::parse_size("16x8192"), std::make_optional(std::make_pair(16, 8192)));
+  for(const char* bad : {"800x600x3", "800x600x", "800x", "x600", "800", "", " 800x600", "800x600 ", "800 x600",
+                         "+800x600", "-800x600", "800x6e2", "800.0x600", "15x600", "800x8193", "99999999999x600"})
+    EXPECT_EQ(diffuv_cli::parse_size(bad), std::nullopt) << '"' << bad << '"';
+}
+
+TEST(CliText, ListItemsLoseTheSpacesAroundThem)
+{
+  using List = std::vector<std::string>;
+  EXPECT_EQ(diffuv_cli::split_list("tutte, lscm"), (List{"tutte", "lscm"}));
+  EXPECT_EQ(diffuv_cli::split_list(" diffuv ,\tarap\t"), (List{"diffuv", "arap"}));
+  EXPECT_EQ(diffuv_cli::split_list("tutte"), (List{"tutte"}));
+  EXPECT_EQ(diffuv_cli::split_list(""), List{});
+  EXPECT_EQ(diffuv_cli::split_list("tutte,,lscm"), (List{"tutte", "", "lscm"})); // for the caller to refuse
+  EXPECT_EQ(diffuv_cli::split_list("tutte, ,lscm"), (List{"tutte", "", "lscm"}));
+}
+
+TEST(CliText, AnOutputIsNamedOnce)
+{
+  using diffuv_cli::output_name;
+  EXPECT_EQ(output_name("data/cow.off", ".obj"), "cow.obj");
+  EXPECT_EQ(output_name("data/cow.off", ".patches.txt"), "cow.patches.txt");
+  EXPECT_EQ(output_name("seg/cow.patches.ply", ".patches.txt"), "cow.patches.txt"); // not cow.patches.patches.txt
+  EXPECT_EQ(output_name("seg/cow.patches.ply", ".patches.ply"), "cow.patches.ply");
+  EXPECT_EQ(output_name("seg/cow.patches.ply", ".obj"), "cow.patches.obj");
+  EXPECT_EQ(output_name("seg/cow.patches.ply", ".patch3.svg"), "cow.patches.patch3.svg"); // ".patch" is not ".patches"
+  EXPECT_EQ(output_name("m.uv.off", ".uv.csv"), "m.uv.csv");
+  EXPECT_EQ(output_name("patches.off", ".patches.txt"), "patches.patches.txt"); // the stem itself stays
+  EXPECT_EQ(output_name("cowpatches.off", ".patches.txt"), "cowpatches.patches.txt"); // parts end at dots
+  EXPECT_EQ(output_name("a.b.off", ".b.c.d"), "a.b.c.d");
+}
+
+TEST(CliText, PatchNamesAreUnique)
+{
+  EXPECT_EQ(diffuv::patch_name({3, 0, 0}), "3");
+  EXPECT_EQ(diffuv::patch_name({0, 1, 0}), "0.1");
+  EXPECT_EQ(diffuv::patch_name({0, 1, 1}), "0.1#2");
+  EXPECT_EQ(diffuv::patch_name({7, 0, 2}), "7#3");
+  // Two components of label 0, each a cap split in two: 0.1, 0.2, 0.1, 0.2 before.
+  diffuv::Segmentation<diffuv_test::Mesh> seg;
+  seg.patch_label = {0, 0, 0, 0, 5};
+  seg.patch_part = {1, 2, 1, 2, 0};
+  seg.patch_faces.resize(5);
+  const std::vector<std::string> names = diffuv::patch_names(seg);
+  EXPECT_EQ(names, (std::vector<std::string>{"0.1", "0.2", "0.1#2", "0.2#2", "5"}));
+  const auto keys = diffuv::patch_keys(seg);
+  EXPECT_EQ(std::set<diffuv::Patch_key>(keys.begin(), keys.end()).size(), keys.size());
+}
+
+TEST(CliText, CountsAgreeInNumber)
+{
+  using diffuv::internal::count_text;
+  EXPECT_EQ(count_text(1, "patch", "patches"), "1 patch");
+  EXPECT_EQ(count_text(0, "patch", "patches"), "0 patches");
+  EXPECT_EQ(count_text(2, "patch", "patches"), "2 patches");
+  EXPECT_EQ(count_text(1, "face has", "faces have"), "1 face has");
+  EXPECT_EQ(count_text(3, "face has", "faces have"), "3 faces have");
+  EXPECT_EQ(count_text(1, "label"), "1 label");
+  EXPECT_EQ(count_text(12, "label"), "12 labels");
+}
+
+} // namespace
