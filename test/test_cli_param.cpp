@@ -223,4 +223,23 @@ TEST_F(Tool, PatchNamesAreUnique)
   EXPECT_EQ(names, (std::vector<std::string>{"0", "0#2"})) << r.out;
 }
 
+// Columns as wide as their widest entry (issue #19): a long label pushed its
+// row out of line.
+TEST_F(Tool, TheTableStaysAlignedForLargeValues)
+{
+  const std::string mesh = write("m.off", grid_off);
+  const std::string labels = write("l.txt", "1234567890\n1234567890\n1234567890\n1234567890\n7\n7\n7\n7\n");
+  const Tool_run r = run("param " + mesh + " --labels " + labels + " -o " + out_dir().string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::vector<std::string> lines = table_lines(r.out);
+  ASSERT_GE(lines.size(), 3u) << r.out;
+  EXPECT_NE(r.out.find(" 1234567890"), std::string::npos) << r.out;
+  for(const std::string& line : lines) {
+    EXPECT_EQ(line.size(), lines.front().size()) << line << "\n" << r.out;
+    // Every column ends where its title ends.
+    EXPECT_EQ(line.find_last_not_of(' ', lines.front().find("vertices") + 7), lines.front().find("vertices") + 7)
+        << line;
+  }
+}
+
 } // namespace

@@ -1,10 +1,11 @@
 // Unit tests of what the diffuv tool says and parses, without running it:
-// picture sizes, lists of methods, output names, patch names and counts
-// (src/cli/command_line.h, diffuv/patches/patch_names.h,
-// diffuv/internal/message_text.h).
+// picture sizes, lists of methods, output names, tables, patch names and
+// counts (src/cli/command_line.h, src/cli/table.h,
+// diffuv/patches/patch_names.h, diffuv/internal/message_text.h).
 #include "test_data.h"
 
 #include "cli/command_line.h"
+#include "cli/table.h"
 
 #include <diffuv/internal/message_text.h>
 #include <diffuv/patches/patch_names.h>
@@ -21,6 +22,8 @@
 #include <vector>
 
 namespace {
+
+using diffuv_cli::Table;
 
 TEST(CliText, SizeIsTwoWholeNumbersJoinedByAnX)
 {
@@ -55,6 +58,34 @@ TEST(CliText, AnOutputIsNamedOnce)
   EXPECT_EQ(output_name("patches.off", ".patches.txt"), "patches.patches.txt"); // the stem itself stays
   EXPECT_EQ(output_name("cowpatches.off", ".patches.txt"), "cowpatches.patches.txt"); // parts end at dots
   EXPECT_EQ(output_name("a.b.off", ".b.c.d"), "a.b.c.d");
+}
+
+// Lines of a table's text.
+std::vector<std::string> lines_of(const std::string& text)
+{
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for(std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+TEST(CliText, TableColumnsAreAsWideAsTheirWidestEntry)
+{
+  Table table({{"name", 6, Table::left}, {"count", 5, Table::right}, {"ok", 3, Table::right}});
+  table.add_row({"a", "1", "yes"});
+  // The fixed widths of printf, as long as the entries fit.
+  EXPECT_EQ(table.text(), "name   count  ok\na          1 yes\n");
+  table.add_row({"b", "123456789", "no"});
+  table.add_row({"c", "7"}, "  failed: why");
+  EXPECT_EQ(table.text(),
+            "name       count  ok\n"
+            "a              1 yes\n"
+            "b      123456789  no\n"
+            "c              7  failed: why\n");
+  for(const std::string& line : lines_of(table.text()))
+    if(line.find("failed") == std::string::npos) EXPECT_EQ(line.size(), 20u) << line;
+  EXPECT_EQ(diffuv_cli::formatted("%8.2f|%-3s|%zu", 3.14159, "x", std::size_t(42)), "    3.14|x  |42");
+  EXPECT_EQ(diffuv_cli::formatted("%s", std::string(300, 'a').c_str()).size(), 300u);
 }
 
 TEST(CliText, PatchNamesAreUnique)

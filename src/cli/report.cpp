@@ -1,5 +1,6 @@
 // diffuv tool: what `param` and `render` print after a run.
 #include "report.h"
+#include "table.h"
 
 #include <diffuv/patches/patch_names.h>
 
@@ -33,14 +34,26 @@ std::string corner_rule(const diffuv::Side_report& r, bool given)
   return s;
 }
 
-void print_row(const std::string& name, const std::string& label, std::size_t vertices, std::size_t faces,
-               const std::string& corners, double ms, std::size_t moved, std::size_t flat,
-               const diffuv::Distortion_summary& d)
+// The columns of the table: what, how wide at least, which side.
+Table patch_table()
 {
-  std::printf("%-6s %6s %8zu %8zu %-10s %8.2f %6zu %7zu %5zu %6zu %8zu %9.4f %9.4g %9.4f %9.4g %8.4g %9.4g %9s\n",
-              name.c_str(), label.c_str(), vertices, faces, corners.c_str(), ms, moved, d.flipped, d.degenerate, flat,
-              d.overlapping_pairs, d.angle_mean, d.angle_max, d.area_mean, d.area_max, d.stretch_l2, d.stretch_linf,
-              d.injective() ? "yes" : "no");
+  return Table({{"patch", 6, Table::left},      {"label", 6, Table::right},     {"vertices", 8, Table::right},
+                {"faces", 8, Table::right},     {"corners", 10, Table::left},   {"time_ms", 8, Table::right},
+                {"moved", 6, Table::right},     {"flipped", 7, Table::right},   {"degen", 5, Table::right},
+                {"flat", 6, Table::right},      {"overlaps", 8, Table::right},  {"angle_avg", 9, Table::right},
+                {"angle_max", 9, Table::right}, {"area_avg", 9, Table::right},  {"area_max", 9, Table::right},
+                {"L2", 8, Table::right},        {"Linf", 9, Table::right},      {"injective", 9, Table::right}});
+}
+
+void add_row(Table& table, const std::string& patch, const std::string& name, std::size_t vertices, std::size_t faces,
+             const std::string& corners, double ms, std::size_t moved, std::size_t flat,
+             const diffuv::Distortion_summary& d)
+{
+  table.add_row({patch, name, std::to_string(vertices), std::to_string(faces), corners, formatted("%.2f", ms),
+                 std::to_string(moved), std::to_string(d.flipped), std::to_string(d.degenerate), std::to_string(flat),
+                 std::to_string(d.overlapping_pairs), formatted("%.4f", d.angle_mean), formatted("%.4g", d.angle_max),
+                 formatted("%.4f", d.area_mean), formatted("%.4g", d.area_max), formatted("%.4g", d.stretch_l2),
+                 formatted("%.4g", d.stretch_linf), d.injective() ? "yes" : "no"});
 }
 
 // The first lines: the mesh, then the corners or the patches.
@@ -75,34 +88,31 @@ double print_table(const Param_run& run, const Param_options& options)
 {
   const Parameterization& result = run.result;
   const std::vector<std::string> names = diffuv::patch_names(result.seg);
-  std::printf("%-6s %6s %8s %8s %-10s %8s %6s %7s %5s %6s %8s %9s %9s %9s %9s %8s %9s %9s\n", "patch", "label",
-              "vertices", "faces", "corners", "time_ms", "moved", "flipped", "degen", "flat", "overlaps", "angle_avg", "angle_max", "area_avg",
-              "area_max", "L2", "Linf", "injective");
-
+  Table table = patch_table();
   diffuv::Distortion_summary total;
   double patch_ms = 0;
   std::size_t vertex_entries = 0, moved = 0, flat = 0;
   for(std::size_t p = 0; p < result.patches.size(); ++p) {
     const auto& r = result.patches[p];
-    const std::string& label = names[p];
     if(!r.status) {
-      std::printf("%-6zu %6s %8s %8zu  failed: %s\n", p, label.c_str(), "-", result.seg.patch_faces[p].size(),
-                  r.status.what().c_str());
+      table.add_row({std::to_string(p), names[p], "-", std::to_string(result.seg.patch_faces[p].size())},
+                    "  failed: " + r.status.what());
       continue;
     }
     const auto& chart = result.atlas->chart(r.chart);
     const diffuv::Distortion_summary& d = run.measures[p].summary;
     const std::size_t patch_moved = r.repair.moved_vertices + r.repair.moved_border_vertices;
-    print_row(std::to_string(p), label, chart.vertices.size(), chart.faces.size(),
-              corner_rule(r.side_report, !options.corners.empty()), r.milliseconds, patch_moved,
-              r.repair.flat_triangles, d);
+    add_row(table, std::to_string(p), names[p], chart.vertices.size(), chart.faces.size(),
+            corner_rule(r.side_report, !options.corners.empty()), r.milliseconds, patch_moved,
+            r.repair.flat_triangles, d);
     moved += patch_moved;
     flat += r.repair.flat_triangles;
     vertex_entries += chart.vertices.size();
     total = diffuv::combined(total, d);
     patch_ms += r.milliseconds;
   }
-  print_row("total", "", vertex_entries, total.faces, "", run.total_ms, moved, flat, total);
+  add_row(table, "total", "", vertex_entries, total.faces, "", run.total_ms, moved, flat, total);
+  std::cout << table.text();
   return patch_ms;
 }
 
