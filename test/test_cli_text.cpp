@@ -1,6 +1,6 @@
 // Unit tests of what the diffuv tool says and parses, without running it:
-// picture sizes, lists of methods, output names, tables, patch names and
-// counts (src/cli/command_line.h, src/cli/table.h,
+// picture sizes, lists of methods, output names, the data folder, tables,
+// patch names and counts (src/cli/command_line.h, src/cli/table.h,
 // diffuv/patches/patch_names.h, diffuv/internal/message_text.h).
 #include "test_data.h"
 
@@ -58,6 +58,21 @@ TEST(CliText, AnOutputIsNamedOnce)
   EXPECT_EQ(output_name("patches.off", ".patches.txt"), "patches.patches.txt"); // the stem itself stays
   EXPECT_EQ(output_name("cowpatches.off", ".patches.txt"), "cowpatches.patches.txt"); // parts end at dots
   EXPECT_EQ(output_name("a.b.off", ".b.c.d"), "a.b.c.d");
+}
+
+class CliDataFolder : public diffuv_test::Temp_dir_test {};
+
+TEST_F(CliDataFolder, TheEnvironmentThenTheInstalledDataThenTheBuildTree)
+{
+  using diffuv_cli::data_folder;
+  const std::filesystem::path installed = dir_ / "bin" / ".." / "share" / "diffuv";
+  EXPECT_EQ(data_folder("cow.off", nullptr, installed, "/built"), "/built"); // nothing installed
+  std::filesystem::create_directories(dir_ / "share" / "diffuv" / "meshes");
+  std::ofstream(dir_ / "share" / "diffuv" / "meshes" / "cow.off") << "OFF\n";
+  EXPECT_EQ(data_folder("cow.off", nullptr, installed, "/built"), (dir_ / "share" / "diffuv").string());
+  EXPECT_EQ(data_folder("nefertiti.off", nullptr, installed, "/built"), "/built"); // not installed
+  EXPECT_EQ(data_folder("cow.off", "/mine", installed, "/built"), "/mine");
+  EXPECT_EQ(data_folder("cow.off", nullptr, std::filesystem::path(), "/built"), "/built");
 }
 
 // Lines of a table's text.

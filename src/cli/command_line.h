@@ -74,6 +74,21 @@ inline std::string output_name(const std::string& mesh_path, const std::string& 
   return stem + ending.substr(overlap);
 }
 
+/// The folder of the meshes a command maps when it is given none (its
+/// `meshes/` holds cow.off, nefertiti.off): the first of `from_environment`
+/// ($DIFFUV_DATA_DIR) if set, `installed` (the data installed with the tool,
+/// found from the tool's own path) if it holds `mesh_name`, and `built` (the
+/// build tree's data, where the tool was built).
+inline std::string data_folder(const std::string& mesh_name, const char* from_environment,
+                               const std::filesystem::path& installed, const std::string& built)
+{
+  if(from_environment) return from_environment;
+  const std::filesystem::path folder = installed.lexically_normal();  // bin/../share/diffuv: share/diffuv
+  std::error_code error;
+  if(!folder.empty() && std::filesystem::is_regular_file(folder / "meshes" / mesh_name, error)) return folder.string();
+  return built;
+}
+
 } // namespace diffuv_cli
 
 #endif // DIFFUV_CLI_COMMAND_LINE_H

@@ -21,6 +21,7 @@
 #include <CLI/CLI.hpp>
 
 #include <cstdlib>
+#include <filesystem>
 #include <map>
 #include <string>
 #include <vector>
@@ -52,11 +53,16 @@ struct Patch_cli_options {
   std::size_t threads = 0;       // threads that map the patches while the layout is refined
 };
 
-/// CGAL's data set extracted by the build, or $DIFFUV_DATA_DIR.
+/// One of CGAL's meshes, for a command given none: from $DIFFUV_DATA_DIR, else
+/// as installed with the tool (DIFFUV_INSTALLED_DATA_DIR, relative to the
+/// folder of the executable), else from the build tree (DIFFUV_DEFAULT_DATA_DIR).
 inline std::string default_mesh(const std::string& name)
 {
-  const char* env = std::getenv("DIFFUV_DATA_DIR");
-  return std::string(env ? env : DIFFUV_DEFAULT_DATA_DIR) + "/meshes/" + name;
+  std::error_code error;
+  const std::filesystem::path executable = std::filesystem::read_symlink("/proc/self/exe", error);
+  const std::filesystem::path installed =
+      error ? std::filesystem::path() : executable.parent_path() / DIFFUV_INSTALLED_DATA_DIR;
+  return data_folder(name, std::getenv("DIFFUV_DATA_DIR"), installed, DIFFUV_DEFAULT_DATA_DIR) + "/meshes/" + name;
 }
 
 inline void add_patch_options(CLI::App* cmd, Patch_cli_options& o)
