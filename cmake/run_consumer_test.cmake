@@ -1,7 +1,8 @@
 # The consumer test (CTest: consumer_find_package), run with cmake -P:
 # installs this build into a private prefix, then configures, builds and runs
 # test/consumer, a separate project that finds diffuv with find_package()
-# through that prefix only. Any failing step fails the test.
+# through that prefix only, and runs the installed tool once. Any failing step
+# fails the test.
 #
 # -D variables (set by add_test in the top-level CMakeLists.txt):
 #   DIFFUV_BUILD_DIR    the diffuv build tree to install
@@ -100,4 +101,25 @@ if(EXAMPLE_SOURCE)
     message(FATAL_ERROR "[consumer] the example without a mesh, in an empty folder: exit ${rc}, stderr: ${err}")
   endif()
   message(STATUS "[consumer] example without a mesh: exit ${rc}, ${err}")
+endif()
+
+# 6. The installed tool, when it is built, finds its default mesh in the
+#    prefix, not in the build tree: run from another folder, without
+#    DIFFUV_DATA_DIR, it names the installed cow.off.
+file(GLOB tool LIST_DIRECTORIES false "${INSTALL_PREFIX}/*/diffuv")
+if(tool)
+  set(work "${CONSUMER_BUILD_DIR}/tool-run")
+  file(MAKE_DIRECTORY "${work}")
+  message(STATUS "[consumer] installed tool: ${tool} segment")
+  execute_process(COMMAND "${CMAKE_COMMAND}" -E env --unset=DIFFUV_DATA_DIR "${tool}" segment -o "${work}/out"
+    WORKING_DIRECTORY "${work}" RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc STREQUAL "0")
+    message(FATAL_ERROR "[consumer] the installed tool failed (${rc}): ${err}")
+  endif()
+  string(FIND "${out}" "diffuv segment ${INSTALL_PREFIX}/" at)
+  string(FIND "${out}" "/diffuv/meshes/cow.off:" mesh_at)
+  if(NOT at EQUAL 0 OR mesh_at EQUAL -1)
+    message(FATAL_ERROR "[consumer] the installed tool did not take its mesh from ${INSTALL_PREFIX}: ${out}")
+  endif()
+  message(STATUS "[consumer] installed tool: ok (its cow.off is the installed one)")
 endif()

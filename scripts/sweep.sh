@@ -113,7 +113,7 @@ for mesh in "${meshes[@]}"; do
     elif [ -n "$(grep -v -E '^diffuv: warning: ' "$log.stderr")" ]; then
       outcome=BAD detail="exit 0 with other text on stderr: $(grep -v -E '^diffuv: warning: ' "$log.stderr" | head -n1)"
     else
-      patches=$(sed -n 2p "$log.stdout" | grep -o -E '^[0-9]+ patches' || true)
+      patches=$(sed -n 2p "$log.stdout" | grep -o -E '^[0-9]+ patch(es)?' || true)
       [ -n "$patches" ] || patches=$(sed -n 2p "$log.stdout" | cut -c1-60)
       if [ -n "$warning" ]; then
         outcome=partial detail="$patches; warning: $warning"

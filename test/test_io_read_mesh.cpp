@@ -254,7 +254,7 @@ TEST_F(IoReadMesh, OffSyntaxErrorsHaveALine)
     {"OFF\n3 x 0\n", 2, "not a valid OFF file (cannot read the numbers of vertices, faces and edges)"},
     {"OFF\n-1 1 0\n0 0 0\n", 2, "not a valid OFF file (negative number of vertices or faces)"},
     {"OFF\n200000000 1 0\n0 0 0\n3 0 0 0\n", 2,
-     "not a valid OFF file (the header announces 200000000 vertices and 1 faces, "
+     "not a valid OFF file (the header announces 200000000 vertices and 1 face, "
      "more than the 32 bytes of the file can hold)"},
     {"# a comment\nOFF\n# another\n3 1 0\n0 0 0\n\n1 0\n0 1 0\n3 0 1 2\n", 7,
      "not a valid OFF file (vertex 1 does not have 3 coordinates)"},

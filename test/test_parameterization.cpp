@@ -284,7 +284,7 @@ TEST(DiffusionCoordinates, EmptySideUnreachableAndOppositeSides)
   diffuv::Diffusion_coordinates<Graph, diffuv::Graph_distance_tag> coordinates(g);
   const diffuv::Status s = coordinates.compute(sides, get(boost::edge_weight, g), map);
   EXPECT_EQ(s.code, diffuv::Status_code::unreachable_vertices);
-  EXPECT_EQ(s.detail, "1 vertices");
+  EXPECT_EQ(s.detail, "1 vertex");
   EXPECT_DOUBLE_EQ(uv[1].x(), 0.25);
   EXPECT_DOUBLE_EQ(uv[2].x(), 0.5);
   EXPECT_DOUBLE_EQ(uv[2].y(), 0.5); // on v1 and v2: halfway

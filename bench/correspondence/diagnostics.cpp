@@ -4,6 +4,7 @@
 #include "correspondence/correspondence_bench.h"
 
 #include <diffuv/correspondence/nearest_face_labels.h>
+#include <diffuv/patches/patch_names.h>
 
 #include <CGAL/Polygon_mesh_processing/measure.h>
 
@@ -42,9 +43,9 @@ std::string list_text(const Range& r)
   return joined(r, [](std::ostream& s, const auto& x) { s << x; });
 }
 
-std::string pairs_text(const std::vector<std::pair<int, int>>& r)
+std::string patch_names_text(const std::vector<diffuv::Patch_key>& r)
 {
-  return joined(r, [](std::ostream& s, const std::pair<int, int>& x) { s << "(" << x.first << "," << x.second << ")"; });
+  return joined(r, [](std::ostream& s, const diffuv::Patch_key& x) { s << diffuv::patch_name(x); });
 }
 
 } // namespace
@@ -58,8 +59,8 @@ std::string diagnose(const Mesh_case& a, const Variant& b, const Labelled& atlas
   out << "- patches: A " << a.atlas->segmentation.number_of_patches() << " (" << r.charts_a << " charts), B "
       << atlas_b.segmentation.number_of_patches() << " (" << r.charts_b << " charts); matched " << r.matched
       << "; labels only in A: " << list_text(r.match.labels_only_in_a) << "; only in B: "
-      << list_text(r.match.labels_only_in_b) << "; unmatched patches of A: " << pairs_text(r.match.unmatched_patches_a)
-      << ", of B: " << pairs_text(r.match.unmatched_patches_b) << "\n";
+      << list_text(r.match.labels_only_in_b) << "; unmatched patches of A: " << patch_names_text(r.match.unmatched_patches_a)
+      << ", of B: " << patch_names_text(r.match.unmatched_patches_b) << "\n";
   out << "- label cleaning changed " << r.cleaned_a << " faces of A, " << r.cleaned_b << " of B; patching of B: "
       << atlas_b.patching.merged << " merged, " << atlas_b.patching.cut << " cut, " << atlas_b.patching.caps_split
       << " caps split (A: " << a.atlas->patching.merged << ", " << a.atlas->patching.cut << ", "

@@ -43,6 +43,7 @@
 #include <diffuv/patches/disc_topology.h>
 #include <diffuv/patches/flat_triangles.h>
 #include <diffuv/patches/merge_small_patches.h>
+#include <diffuv/patches/patch_names.h>
 #include <diffuv/patches/patches_from_labels.h>
 #include <diffuv/patches/region_sides.h>
 #include <diffuv/patches/segmentation.h>

@@ -2,6 +2,7 @@
 // patches with the same corners, measured by the same metrics.
 #include "commands.h"
 #include "inputs.h"
+#include "table.h"
 
 #include <diffuv/atlas/Uv_atlas.h>
 #include <diffuv/cgal/Diffusion_parameterizer_3.h>
@@ -20,11 +21,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstdio>
 #include <iostream>
 #include <memory>
 #include <optional>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -63,9 +62,7 @@ struct Method {
 std::vector<Method> parse_methods(const Compare_options& o)
 {
   std::vector<Method> methods;
-  std::stringstream list(o.methods);
-  std::string name;
-  while(std::getline(list, name, ',')) {
+  for(const std::string& name : split_list(o.methods)) {
     Method m;
     m.name = name;
     if(name == "diffuv") {
@@ -258,27 +255,33 @@ void run_compare(const Compare_options& options)
     out.commit();
   }
 
-  std::cout << "diffuv compare " << in.path << ": " << num_vertices(mesh) << " vertices, " << num_faces(mesh)
-            << " faces, " << seg.number_of_patches() << (seg.number_of_patches() == 1 ? " patch" : " patches")
+  std::cout << "diffuv compare " << in.path << ": " << count_text(num_vertices(mesh), "vertex", "vertices") << ", "
+            << count_text(num_faces(mesh), "face") << ", " << count_text(seg.number_of_patches(), "patch", "patches")
             << (options.corners.empty() ? "" : " (corners from " + options.corners + ")") << "; median of "
-            << options.runs << (options.runs == 1 ? " run" : " runs") << ", times summed over patches";
+            << count_text(static_cast<std::size_t>(options.runs), "run") << ", times summed over patches";
   if(flat_triangles_handed) std::cout << "; " << flat_triangles_handed_clause(flat_triangles_handed);
   std::cout << "\n";
-  std::printf("%-18s %10s %7s %7s %5s %8s %9s %9s %9s %9s %8s %9s %7s\n", "method", "time_ms", "failed", "flipped",
-              "degen", "overlaps", "angle_avg", "angle_max", "area_avg", "area_max", "L2", "moved", "1-to-1");
+  Table table({{"method", 18, Table::left},    {"time_ms", 10, Table::right},  {"failed", 7, Table::right},
+               {"flipped", 7, Table::right},    {"degen", 5, Table::right},     {"overlaps", 8, Table::right},
+               {"angle_avg", 9, Table::right},  {"angle_max", 9, Table::right}, {"area_avg", 9, Table::right},
+               {"area_max", 9, Table::right},   {"L2", 8, Table::right},        {"moved", 9, Table::right},
+               {"1-to-1", 7, Table::right}});
   for(std::size_t k = 0; k < methods.size(); ++k) {
     const Method_result& r = results[k];
     const diffuv::Distortion_summary& d = r.total;
     const bool one_to_one = r.failed == 0 && d.injective();
-    std::printf("%-18s %10.3f %7zu %7zu %5zu %8zu %9.4f %9.4g %9.4f %9.4g %8.4g %9s %7s\n", methods[k].name.c_str(),
-                r.milliseconds, r.failed, d.flipped, d.degenerate, d.overlapping_pairs, d.angle_mean, d.angle_max,
-                d.area_mean, d.area_max, d.stretch_l2, methods[k].is_diffuv ? std::to_string(r.moved).c_str() : "-",
-                one_to_one ? "yes" : "no");
+    table.add_row({methods[k].name, formatted("%.3f", r.milliseconds), std::to_string(r.failed),
+                   std::to_string(d.flipped), std::to_string(d.degenerate), std::to_string(d.overlapping_pairs),
+                   formatted("%.4f", d.angle_mean), formatted("%.4g", d.angle_max), formatted("%.4f", d.area_mean),
+                   formatted("%.4g", d.area_max), formatted("%.4g", d.stretch_l2),
+                   methods[k].is_diffuv ? std::to_string(r.moved) : "-", one_to_one ? "yes" : "no"});
   }
+  std::cout << table.text();
   for(std::size_t k = 0; k < methods.size(); ++k)
     if(results[k].failed > 0)
       std::cerr << "diffuv: warning: " << methods[k].name << " could not map " << results[k].failed << " of "
-                << seg.number_of_patches() << " patches; the first: " << results[k].first_failure << '\n';
+                << count_text(seg.number_of_patches(), "patch", "patches") << "; the first: " << results[k].first_failure
+                << '\n';
 }
 
 } // namespace

@@ -67,11 +67,6 @@ std::string no_labels_message(const std::string& option, bool other_has_labels)
   return m;
 }
 
-std::string count(std::size_t n, const std::string& one, const std::string& many)
-{
-  return std::to_string(n) + " " + (n == 1 ? one : many);
-}
-
 // Per-vertex rows of numbers (one row per vertex of B): what --values transfers.
 std::vector<std::vector<double>> read_value_rows(const std::string& path, std::size_t expected_rows)
 {
@@ -96,13 +91,13 @@ std::vector<std::vector<double>> read_value_rows(const std::string& path, std::s
     if(row.empty()) continue;
     if(rows.empty()) columns = row.size();
     if(row.size() != columns)
-      throw diffuv::Input_error(path, line_number, "this row has " + count(row.size(), "value", "values") +
+      throw diffuv::Input_error(path, line_number, "this row has " + count_text(row.size(), "value") +
                                                        ", the first row has " + std::to_string(columns));
     rows.push_back(std::move(row));
   }
   if(rows.size() != expected_rows)
-    throw diffuv::Input_error(path, 0, "the file has " + std::to_string(rows.size()) + " rows, mesh B has " +
-                                           std::to_string(expected_rows) + " vertices (one row per vertex)");
+    throw diffuv::Input_error(path, 0, "the file has " + count_text(rows.size(), "row") + ", mesh B has " +
+                                           count_text(expected_rows, "vertex", "vertices") + " (one row per vertex)");
   return rows;
 }
 
@@ -132,12 +127,19 @@ std::string label_list(const std::vector<int>& labels)
   return s;
 }
 
+// The faces relabelled, and by which rule: "12 faces relabelled (7 in 3
+// islands, 5 by border smoothing, 0 at 1 pinch)". Where a face was relabelled
+// more than once, the rules' counts are relabellings and add up to more.
 std::string cleaning_text(const diffuv::Label_cleaning_report& r, bool cleaned)
 {
   if(!cleaned) return "labels not cleaned (--no-clean)";
   if(r.empty()) return "labels clean";
-  return count(r.changed_faces(), "face", "faces") + " relabelled (" + count(r.islands, "island", "islands") + ", " +
-         std::to_string(r.smoothed_faces) + " by border smoothing, " + count(r.pinches, "pinch", "pinches") + ")";
+  const std::size_t relabellings = r.island_faces + r.smoothed_faces + r.pinch_faces;
+  return count_text(r.changed_faces(), "face") + " relabelled (" +
+         (relabellings == r.changed_faces() ? std::string() : count_text(relabellings, "relabelling") + ": ") +
+         std::to_string(r.island_faces) + " in " + count_text(r.islands, "island") + ", " +
+         std::to_string(r.smoothed_faces) + " by border smoothing, " + std::to_string(r.pinch_faces) + " at " +
+         count_text(r.pinches, "pinch", "pinches") + ")";
 }
 
 // Why patches have no chart: how many, and the first reason.
@@ -149,7 +151,7 @@ std::string unmapped_text(const Atlas& atlas)
     if(!atlas.patches[p].status) {
       if(failed++ == 0) first = atlas.patches[p].status.what();
     }
-  return failed == 0 ? std::string() : count(failed, "patch", "patches") + " could not be mapped (" + first + ")";
+  return failed == 0 ? std::string() : count_text(failed, "patch", "patches") + " could not be mapped (" + first + ")";
 }
 
 void run_correspond(const Correspond_options& o)
@@ -162,7 +164,7 @@ void run_correspond(const Correspond_options& o)
   // --transfer-labels, B's colours are data to carry, not regions.
   Paint_reading paint_a, paint_b;
   paint_a.color_values = paint_b.color_values = true;
-  paint_b.read = !o.transfer_labels || !o.labels_b.empty();
+  paint_b.read = !o.transfer_labels;
   const Input_mesh a = read_input(o.mesh_a, pa, paint_a);
   Input_mesh b = read_input(o.mesh_b, pb, paint_b);
   if(a.face_labels.empty())
@@ -277,20 +279,22 @@ void run_correspond(const Correspond_options& o)
 
   const std::size_t na = num_vertices(a.mesh);
   std::cout << "diffuv correspond " << a.path << " -> " << b.path << "\n"
-            << "A: " << na << " vertices, " << atlas_a.segmentation.number_of_patches() << " patches ("
-            << a.label_source << "; " << cleaning_text(atlas_a.cleaning, !o.no_clean) << ")\n"
-            << "B: " << num_vertices(b.mesh) << " vertices, " << atlas_b.segmentation.number_of_patches()
-            << " patches (" << b.label_source << "; " << cleaning_text(atlas_b.cleaning, !o.no_clean) << ")\n"
-            << "regions matched: " << match.matched_labels.size() << " labels, " << match.matched_patches
-            << " patches\n";
+            << "A: " << count_text(na, "vertex", "vertices") << ", "
+            << count_text(atlas_a.segmentation.number_of_patches(), "patch", "patches") << " (" << a.label_source << "; "
+            << cleaning_text(atlas_a.cleaning, !o.no_clean) << ")\n"
+            << "B: " << count_text(num_vertices(b.mesh), "vertex", "vertices") << ", "
+            << count_text(atlas_b.segmentation.number_of_patches(), "patch", "patches") << " (" << b.label_source << "; "
+            << cleaning_text(atlas_b.cleaning, !o.no_clean) << ")\n"
+            << "regions matched: " << count_text(match.matched_labels.size(), "label") << ", "
+            << count_text(match.matched_patches, "patch", "patches") << "\n";
   if(!match.labels_only_in_a.empty())
     std::cout << "labels only in A (not mapped): " << label_list(match.labels_only_in_a) << '\n';
   if(!match.labels_only_in_b.empty())
     std::cout << "labels only in B (nothing maps there): " << label_list(match.labels_only_in_b) << '\n';
-  auto pieces = [](const std::vector<std::pair<int, int>>& v) {
+  // Patches by name, as param's table names them.
+  auto pieces = [](const std::vector<diffuv::Patch_key>& v) {
     std::string s;
-    for(std::size_t i = 0; i < v.size() && i < 8; ++i)
-      s += (i ? ", " : "") + std::to_string(v[i].first) + "." + std::to_string(v[i].second);
+    for(std::size_t i = 0; i < v.size() && i < 8; ++i) s += (i ? ", " : "") + diffuv::patch_name(v[i]);
     if(v.size() > 8) s += ", ... (" + std::to_string(v.size()) + " in all)";
     return s;
   };
@@ -303,9 +307,9 @@ void run_correspond(const Correspond_options& o)
     if(!failed.empty()) std::cout << "on " << name << ", " << failed << '\n';
   }
   if(!match.unmatched_patches_a.empty())
-    std::cout << "patches of A without a counterpart (label.part): " << pieces(match.unmatched_patches_a) << '\n';
+    std::cout << "patches of A without a counterpart: " << pieces(match.unmatched_patches_a) << '\n';
   if(!match.unmatched_patches_b.empty())
-    std::cout << "patches of B without a counterpart (label.part): " << pieces(match.unmatched_patches_b) << '\n';
+    std::cout << "patches of B without a counterpart: " << pieces(match.unmatched_patches_b) << '\n';
   std::cout << "vertices mapped: " << mapped << " of " << na << " (" << inside << " inside a triangle of B's chart, "
             << mapped - inside << " onto its nearest point)\n"
             << "colours: " << (b_painted ? "B's vertex colours" : "B's position in its bounding box (B has no vertex colours)")
@@ -332,10 +336,12 @@ void add_correspond_command(CLI::App& app)
   cmd->add_option("--labels-a", options->labels_a,
                   "Region label file of A: one integer per face (file order). Default: regions painted in A's "
                   "PLY/OFF file (face colours or a label property)");
-  cmd->add_option("--labels-b", options->labels_b, "Region label file of B (the same labels name the same regions)");
+  CLI::Option* labels_b =
+      cmd->add_option("--labels-b", options->labels_b, "Region label file of B (the same labels name the same regions)");
   cmd->add_flag("--transfer-labels", options->transfer_labels,
-                "If B has no labels, give each face of B the label of A's nearest face (only meaningful when B lies "
-                "on top of A, e.g. a remeshed copy)");
+                "Give each face of B the label of A's nearest face, instead of --labels-b or regions painted in B "
+                "(only meaningful when B lies on top of A, e.g. a remeshed copy; B's colours are then data to carry)")
+      ->excludes(labels_b);
   cmd->add_option("--values", options->values,
                   "Text file with one row of numbers per vertex of B (scalars, colours, texture coordinates...): "
                   "written for A's vertices, interpolated, to OUTPUT/values.txt");

@@ -3,12 +3,15 @@
 #ifndef DIFFUV_CLI_INPUTS_H
 #define DIFFUV_CLI_INPUTS_H
 
+#include "command_line.h"
+
 #include <diffuv/core/error.h>
 #include <diffuv/graph/distance_tags.h>
 #include <diffuv/core/color.h>
 #include <diffuv/io/painted_labels.h>
 #include <diffuv/io/read_labels.h>
 #include <diffuv/io/read_mesh.h>
+#include <diffuv/internal/message_text.h>
 #include <diffuv/parameterization/layout_judge.h>
 #include <diffuv/layout/disc_patches.h>
 
@@ -18,6 +21,7 @@
 #include <CLI/CLI.hpp>
 
 #include <cstdlib>
+#include <filesystem>
 #include <map>
 #include <string>
 #include <vector>
@@ -26,6 +30,7 @@ namespace diffuv_cli {
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Mesh = CGAL::Surface_mesh<Kernel::Point_3>;
+using diffuv::internal::count_text;
 
 /// A mesh as read, with its regions if it has any.
 struct Input_mesh {
@@ -48,11 +53,16 @@ struct Patch_cli_options {
   std::size_t threads = 0;       // threads that map the patches while the layout is refined
 };
 
-/// CGAL's data set extracted by the build, or $DIFFUV_DATA_DIR.
+/// One of CGAL's meshes, for a command given none: from $DIFFUV_DATA_DIR, else
+/// as installed with the tool (DIFFUV_INSTALLED_DATA_DIR, relative to the
+/// folder of the executable), else from the build tree (DIFFUV_DEFAULT_DATA_DIR).
 inline std::string default_mesh(const std::string& name)
 {
-  const char* env = std::getenv("DIFFUV_DATA_DIR");
-  return std::string(env ? env : DIFFUV_DEFAULT_DATA_DIR) + "/meshes/" + name;
+  std::error_code error;
+  const std::filesystem::path executable = std::filesystem::read_symlink("/proc/self/exe", error);
+  const std::filesystem::path installed =
+      error ? std::filesystem::path() : executable.parent_path() / DIFFUV_INSTALLED_DATA_DIR;
+  return data_folder(name, std::getenv("DIFFUV_DATA_DIR"), installed, DIFFUV_DEFAULT_DATA_DIR) + "/meshes/" + name;
 }
 
 inline void add_patch_options(CLI::App* cmd, Patch_cli_options& o)
@@ -147,7 +157,7 @@ inline Input_mesh read_input(const std::string& path, const Patch_cli_options& o
 inline std::string flat_triangles_handed_clause(std::size_t handed)
 {
   if(handed == 0) return std::string();
-  return std::to_string(handed) + (handed == 1 ? " flat triangle" : " flat triangles") + " handed to a neighbour";
+  return count_text(handed, "flat triangle") + " handed to a neighbour";
 }
 
 /// Cuts the mesh into disc patches (see `diffuv::disc_patches()`).
@@ -179,22 +189,22 @@ inline std::string patching_clause(const diffuv::Patching_report& r, const Patch
   std::string s;
   if(o.layout == "voronoi" || r.voronoi_instead) {
     s = std::to_string(r.merged) + " merged, " + std::to_string(r.cut) + " cut into discs, " +
-        std::to_string(r.caps_split) + " caps split";
+        count_text(r.caps_split, "cap") + " split";
     if(r.voronoi_instead) s = "the four-sided layout left a patch that is not a disc: Voronoi patches instead; " + s;
   } else {
     const auto& l = r.layout;
     if(l.cells == 0 && l.kept_regions == 0) return r.flat_triangles_handed ? flat_triangles_handed_clause(r.flat_triangles_handed) : "each disc component is one patch";
-    s = "four-sided layout: " + std::to_string(l.quads) + (l.quads == 1 ? " quad" : " quads");
+    s = "four-sided layout: " + count_text(l.quads, "quad");
     if(l.kept_regions > 0) {
       s += " (the regions, kept whole)";
     } else {
-      s += " from " + std::to_string(l.cells) + " cells";
+      s += " from " + count_text(l.cells, "cell");
       if(l.refined_cells > 0) s += ", " + std::to_string(l.refined_cells) + " refined";
     }
-    if(l.fallback_patches > 0) s += ", " + std::to_string(l.fallback_patches) + " other patches";
+    if(l.fallback_patches > 0) s += ", " + count_text(l.fallback_patches, "other patch", "other patches");
     if(r.corners_chosen > 0) s += " (" + std::to_string(r.corners_chosen) + " with corners chosen by their maps)";
     if(r.merged > 0) s += ", " + std::to_string(r.merged) + " merged (fewer than four border vertices)";
-    if(r.cut > 0) s += ", " + std::to_string(r.cut) + (r.cut == 1 ? " region" : " regions") + " not a disc (cut into cells)";
+    if(r.cut > 0) s += ", " + count_text(r.cut, "region not a disc", "regions not discs") + " (cut into cells)";
   }
   if(r.flat_triangles_handed) s += ", " + flat_triangles_handed_clause(r.flat_triangles_handed);
   return s;
@@ -210,12 +220,6 @@ inline void write_polygon_patches(std::ostream& out, const Input_mesh& in, const
     if(p == diffuv::Segmentation<Mesh>::no_patch) p = seg.face_patch[f.idx()];
   }
   for(std::size_t p : patch_of_polygon) out << p << '\n';
-}
-
-/// The name of an output file: the mesh file's stem and an ending.
-inline std::string output_name(const std::string& mesh_path, const std::string& ending)
-{
-  return std::filesystem::path(mesh_path).stem().string() + ending;
 }
 
 } // namespace diffuv_cli

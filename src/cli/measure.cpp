@@ -1,6 +1,9 @@
 // diffuv tool: `diffuv measure` — the distortion of an OBJ's texture charts,
 // whoever made them (diffuv, Blender's Smart UV Project, xatlas ...).
 #include "commands.h"
+#include "table.h"
+
+#include <diffuv/internal/message_text.h>
 
 #include <diffuv/io/read_obj_charts.h>
 #include <diffuv/metrics/distortion.h>
@@ -8,7 +11,6 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 
-#include <cstdio>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -19,6 +21,7 @@ namespace {
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Soup = CGAL::Surface_mesh<Kernel::Point_3>;
+using diffuv::internal::count_text;
 
 struct Measure_options {
   std::string obj;
@@ -34,9 +37,10 @@ void run_measure(const Measure_options& options)
   for(std::size_t t = 0; t < obj.triangles.size(); ++t) triangles_of[obj.chart[t]].push_back(t);
   diffuv::Distortion_summary total;
   std::size_t not_injective = 0;
-  if(options.charts)
-    std::printf("%-6s %8s %7s %5s %8s %9s %9s %8s %9s %9s\n", "chart", "faces", "flipped", "degen", "overlaps",
-                "angle_avg", "area_avg", "L2", "Linf", "injective");
+  Table charts({{"chart", 6, Table::left},     {"faces", 8, Table::right},    {"flipped", 7, Table::right},
+                {"degen", 5, Table::right},    {"overlaps", 8, Table::right}, {"angle_avg", 9, Table::right},
+                {"area_avg", 9, Table::right}, {"L2", 8, Table::right},       {"Linf", 9, Table::right},
+                {"injective", 9, Table::right}});
   for(std::size_t c = 0; c < obj.number_of_charts; ++c) {
     Soup soup;
     std::vector<Kernel::Point_2> uv;
@@ -54,20 +58,24 @@ void run_measure(const Measure_options& options)
     const auto d = diffuv::measure_distortion(soup, soup.points(), faces,
                                               boost::make_iterator_property_map(uv.begin(), get(boost::vertex_index, soup)));
     if(!d.injective()) ++not_injective;
-    if(options.charts)
-      std::printf("%-6zu %8zu %7zu %5zu %8zu %9.4f %9.4f %8.4g %9.4g %9s\n", c, d.faces, d.flipped, d.degenerate,
-                  d.overlapping_pairs, d.angle_mean, d.area_mean, d.stretch_l2, d.stretch_linf, d.injective() ? "yes" : "no");
+    charts.add_row({std::to_string(c), std::to_string(d.faces), std::to_string(d.flipped), std::to_string(d.degenerate),
+                    std::to_string(d.overlapping_pairs), formatted("%.4f", d.angle_mean), formatted("%.4f", d.area_mean),
+                    formatted("%.4g", d.stretch_l2), formatted("%.4g", d.stretch_linf), d.injective() ? "yes" : "no"});
     total = diffuv::combined(total, d);
   }
-  std::cout << "diffuv measure " << options.obj << ": " << obj.positions.size() << " vertices, " << total.faces
-            << " textured triangles in " << obj.number_of_charts << (obj.number_of_charts == 1 ? " chart" : " charts");
-  if(obj.faces_without_uv > 0) std::cout << " (" << obj.faces_without_uv << " faces without vt)";
+  if(options.charts) std::cout << charts.text();
+  std::cout << "diffuv measure " << options.obj << ": " << count_text(obj.positions.size(), "vertex", "vertices") << ", "
+            << count_text(total.faces, "textured triangle") << " in " << count_text(obj.number_of_charts, "chart");
+  if(obj.faces_without_uv > 0) std::cout << " (" << count_text(obj.faces_without_uv, "face") << " without vt)";
   std::cout << '\n';
-  std::printf("%-8s %12s %7s %5s %8s %9s %9s %8s %9s\n", "charts", "not_1-to-1", "flipped", "degen", "overlaps",
-              "angle_avg", "area_avg", "L2", "Linf");
-  std::printf("%-8zu %12zu %7zu %5zu %8zu %9.4f %9.4f %8.4g %9.4g\n", obj.number_of_charts, not_injective, total.flipped,
-              total.degenerate, total.overlapping_pairs, total.angle_mean, total.area_mean, total.stretch_l2,
-              total.stretch_linf);
+  Table summary({{"charts", 8, Table::left},     {"not_1-to-1", 12, Table::right}, {"flipped", 7, Table::right},
+                 {"degen", 5, Table::right},     {"overlaps", 8, Table::right},    {"angle_avg", 9, Table::right},
+                 {"area_avg", 9, Table::right},  {"L2", 8, Table::right},          {"Linf", 9, Table::right}});
+  summary.add_row({std::to_string(obj.number_of_charts), std::to_string(not_injective), std::to_string(total.flipped),
+                   std::to_string(total.degenerate), std::to_string(total.overlapping_pairs),
+                   formatted("%.4f", total.angle_mean), formatted("%.4f", total.area_mean),
+                   formatted("%.4g", total.stretch_l2), formatted("%.4g", total.stretch_linf)});
+  std::cout << summary.text();
 }
 
 } // namespace

@@ -58,12 +58,13 @@ void run_segment(const Segment_options& options)
     smallest = std::min(smallest, faces_of_patch.size());
     largest = std::max(largest, faces_of_patch.size());
   }
-  std::cout << "diffuv segment " << in.path << ": " << num_vertices(in.mesh) << " vertices, " << num_faces(in.mesh)
-            << " faces\n"
-            << seg.number_of_patches() << " patches ("
+  std::cout << "diffuv segment " << in.path << ": " << count_text(num_vertices(in.mesh), "vertex", "vertices") << ", "
+            << count_text(num_faces(in.mesh), "face") << '\n'
+            << count_text(seg.number_of_patches(), "patch", "patches") << " ("
             << (!in.label_source.empty() ? in.label_source : report.automatic ? "automatic" : "the whole disc")
-            << "), " << smallest << " to " << largest << " faces each; " << patching_clause(report, options.patches);
-  if(!report.not_discs.empty()) std::cout << "; " << report.not_discs.size() << " not discs";
+            << "), " << smallest << " to " << count_text(largest, "face") << " each; "
+            << patching_clause(report, options.patches);
+  if(!report.not_discs.empty()) std::cout << "; " << count_text(report.not_discs.size(), "not a disc", "not discs");
   std::cout << "\nwrote";
   for(const auto& p : out.paths()) std::cout << ' ' << p;
   std::cout << '\n';

@@ -19,6 +19,7 @@
 #define DIFFUV_CGAL_DIFFUSION_PARAMETERIZER_3_H
 
 #include <diffuv/core/error.h>
+#include <diffuv/internal/message_text.h>
 #include <diffuv/parameterization/parameterize_disc.h>
 
 #include <CGAL/Default.h>
@@ -338,7 +339,7 @@ private:
     Status status = parameterize_disc<Distance, Heap>(work, get(CGAL::vertex_point, work), corners, atlas, {}, &report);
     if(status && report.repair.remaining_folded_faces > 0)
       status = Status(Status_code::not_injective,
-                      std::to_string(report.repair.remaining_folded_faces) + " folded faces");
+                      internal::count_text(report.repair.remaining_folded_faces, "folded face"));
     sides = std::move(report.sides);
     return status;
   }

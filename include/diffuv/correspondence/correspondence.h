@@ -55,9 +55,10 @@ struct Region_match_report {
   std::vector<int> matched_labels;        ///< labels with at least one matched patch, increasing
   std::vector<int> labels_only_in_a;      ///< labels of A's patches that B lacks
   std::vector<int> labels_only_in_b;      ///< labels of B's patches that A lacks
-  /// Patches (label, part) whose label is in both meshes but whose piece is not
-  /// (the label was cut into different pieces, or a patch could not be mapped).
-  std::vector<std::pair<int, int>> unmatched_patches_a, unmatched_patches_b;
+  /// Patches whose label is in both meshes but whose piece is not (the label
+  /// was cut into different pieces, or a patch could not be mapped), by key
+  /// (`patch_name()` names them).
+  std::vector<Patch_key> unmatched_patches_a, unmatched_patches_b;
   /// Labels in both meshes cut into a different number of patches (pieces of
   /// a label pair by decreasing area, which is then a guess: check them).
   std::vector<int> labels_with_different_pieces;
@@ -235,7 +236,7 @@ private:
       auto it = chart_of_key_b.find(key_a_[c]);
       if(it == chart_of_key_b.end()) {
         if(labels_b.count(std::get<0>(key_a_[c])))
-          report_.unmatched_patches_a.emplace_back(std::get<0>(key_a_[c]), std::get<1>(key_a_[c]));
+          report_.unmatched_patches_a.push_back(key_a_[c]);
         continue;
       }
       b_chart_of_[c] = it->second;
@@ -244,12 +245,12 @@ private:
       ++report_.matched_patches;
     }
     for(const Key& k : unmapped_a)
-      if(labels_b.count(std::get<0>(k))) report_.unmatched_patches_a.emplace_back(std::get<0>(k), std::get<1>(k));
+      if(labels_b.count(std::get<0>(k))) report_.unmatched_patches_a.push_back(k);
     for(std::size_t c = 0; c < key_b.size(); ++c)
       if(!b_used[c] && labels_a.count(std::get<0>(key_b[c])))
-        report_.unmatched_patches_b.emplace_back(std::get<0>(key_b[c]), std::get<1>(key_b[c]));
+        report_.unmatched_patches_b.push_back(key_b[c]);
     for(const Key& k : unmapped_b)
-      if(labels_a.count(std::get<0>(k))) report_.unmatched_patches_b.emplace_back(std::get<0>(k), std::get<1>(k));
+      if(labels_a.count(std::get<0>(k))) report_.unmatched_patches_b.push_back(k);
     std::map<int, std::size_t> pieces_a, pieces_b;
     for(const Key& k : key_a_) ++pieces_a[std::get<0>(k)];
     for(const Key& k : unmapped_a) ++pieces_a[std::get<0>(k)];

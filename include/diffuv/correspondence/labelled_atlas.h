@@ -15,6 +15,7 @@
 #include <diffuv/parameterization/parameterize_patches.h>
 #include <diffuv/parameterization/repair_folds.h>
 #include <diffuv/correspondence/clean_labels.h>
+#include <diffuv/patches/patch_names.h>
 #include <diffuv/layout/disc_patches.h>
 #include <diffuv/layout/sub_patches.h>
 
@@ -86,23 +87,6 @@ struct Labelled_atlas {
 
   const TriangleMesh& mesh() const { return atlas.mesh(); }
 };
-
-/// What pairs a patch of one mesh with a patch of another: (region label,
-/// part, rank). The part numbers the pieces of a cut region and the halves of
-/// a split cap; the rank orders the patches with the same label and part (the
-/// components of one label) by decreasing area.
-using Patch_key = std::tuple<int, int, int>;
-
-/// The key of every patch of `seg`, by patch.
-template <class TriangleMesh>
-std::vector<Patch_key> patch_keys(const Segmentation<TriangleMesh>& seg)
-{
-  std::vector<Patch_key> keys;
-  std::map<std::pair<int, int>, int> rank;
-  for(std::size_t p = 0; p < seg.number_of_patches(); ++p)
-    keys.emplace_back(seg.patch_label[p], seg.patch_part[p], rank[{seg.patch_label[p], seg.patch_part[p]}]++);
-  return keys;
-}
 
 /// The corners of every mapped patch of `atlas` by their regions, by patch key:
 /// what another mesh's atlas follows (`build_labelled_atlas()`'s `follow`).

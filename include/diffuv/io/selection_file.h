@@ -10,6 +10,7 @@
 #define DIFFUV_IO_SELECTION_FILE_H
 
 #include <diffuv/core/error.h>
+#include <diffuv/internal/message_text.h>
 
 #include <boost/graph/graph_traits.hpp>
 
@@ -93,7 +94,7 @@ selection_vertices(const VertexListGraph& tm, const std::vector<std::size_t>& in
   for(std::size_t i : indices) {
     if(i >= by_position.size())
       throw Input_error(path, 1, "vertex index " + std::to_string(i) + " is out of range (the mesh has " +
-                                 std::to_string(by_position.size()) + " vertices)");
+                                 internal::count_text(by_position.size(), "vertex", "vertices") + ")");
     selected.push_back(by_position[i]);
   }
   return selected;

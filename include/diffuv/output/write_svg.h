@@ -16,6 +16,7 @@
 #include <diffuv/atlas/Uv_atlas.h>
 #include <diffuv/core/error.h>
 #include <diffuv/io/atomic_file.h>
+#include <diffuv/internal/message_text.h>
 #include <diffuv/internal/number_format.h>
 #include <diffuv/core/four_sides.h>
 
@@ -240,7 +241,7 @@ void write_uv_layout_svg(std::ostream& out, const Uv_atlas<TriangleMesh, Kernel>
   out << "\">\n";
   out << "<text x=\""; write_svg_number(out, text_x);
   out << "\" y=\""; write_svg_number(out, text_y);
-  out << "\" fill=\"#000000\">chart " << chart << ": " << nf << " faces, " << flipped << " flipped, "
+  out << "\" fill=\"#000000\">chart " << chart << ": " << internal::count_text(nf, "face") << ", " << flipped << " flipped, "
       << degenerate << " degenerate</text>\n";
   if(sides) {
     text_y += 1.2 * font;

@@ -7,6 +7,7 @@
 #define DIFFUV_PARAMETERIZATION_DIFFUSION_COORDINATES_H
 
 #include <diffuv/core/error.h>
+#include <diffuv/internal/message_text.h>
 #include <diffuv/graph/distance_tags.h>
 #include <diffuv/graph/heap_tags.h>
 #include <diffuv/graph/multi_source_dijkstra.h>
@@ -132,7 +133,7 @@ public:
       put(uv, v, Point_2(diffusion_ratio(du1, du2), diffusion_ratio(dv1, dv2)));
     }
     if(unreachable > 0)
-      return Status(Status_code::unreachable_vertices, std::to_string(unreachable) + " vertices");
+      return Status(Status_code::unreachable_vertices, internal::count_text(unreachable, "vertex", "vertices"));
     return Status();
   }
 

@@ -3,6 +3,7 @@
 #define DIFFUV_PARAMETERIZATION_PARAMETERIZE_DISC_H
 
 #include <diffuv/atlas/Uv_atlas.h>
+#include <diffuv/internal/message_text.h>
 #include <diffuv/core/error.h>
 #include <diffuv/graph/edge_length_map.h>
 #include <diffuv/graph/heap_tags.h>
@@ -73,7 +74,7 @@ Status parameterize_disc(const TriangleMesh& tm, VertexPointMap vpm,
 
   const std::vector<vertex_descriptor> loop = counterclockwise_boundary(tm, boundary_loops(tm).front());
   if(loop.size() < 4)
-    return Status(Status_code::border_too_short, std::to_string(loop.size()) + " boundary vertices");
+    return Status(Status_code::border_too_short, internal::count_text(loop.size(), "boundary vertex", "boundary vertices"));
   std::vector<vertex_descriptor> chosen = corners;
   if(corners.empty()) {
     // Equal arcs, then no triangle left flat on one side (see separate_flat_triangles()).

@@ -28,6 +28,7 @@
 #define DIFFUV_PARAMETERIZATION_REPAIR_FOLDS_H
 
 #include <diffuv/core/error.h>
+#include <diffuv/internal/message_text.h>
 #include <diffuv/core/four_sides.h>
 #include <diffuv/parameterization/chart_rectangle.h>
 #include <diffuv/parameterization/internal/repair_patch.h>
@@ -279,7 +280,7 @@ Status repair_folds(const TriangleMesh& tm, VertexPointMap vpm,
   }
   write_back();
   if(r.remaining_folded_faces > 0)
-    return Status(Status_code::not_injective, std::to_string(r.remaining_folded_faces) + " folded faces remain");
+    return Status(Status_code::not_injective, internal::count_text(r.remaining_folded_faces, "folded face remains", "folded faces remain"));
   return Status();
 }
 

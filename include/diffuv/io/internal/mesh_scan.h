@@ -3,6 +3,8 @@
 #ifndef DIFFUV_IO_INTERNAL_MESH_SCAN_H
 #define DIFFUV_IO_INTERNAL_MESH_SCAN_H
 
+#include <diffuv/internal/message_text.h>
+
 #include <cstddef>
 #include <functional>
 #include <limits>
@@ -71,7 +73,7 @@ inline std::string index_text(std::size_t index)
 inline std::string out_of_range_message(std::size_t face, const std::string& index, std::size_t nb_vertices)
 {
   return "face " + std::to_string(face) + " has vertex index " + index + ", out of range (the file has " +
-         std::to_string(nb_vertices) + " vertices)";
+         count_text(nb_vertices, "vertex", "vertices") + ")";
 }
 
 inline std::string non_finite_message(std::size_t vertex)

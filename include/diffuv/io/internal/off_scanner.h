@@ -238,8 +238,8 @@ inline Text_mesh_scan scan_off(const std::string& path, std::uintmax_t file_size
       return fail(counts_line, "the number of edges " + std::to_string(ne) + " is out of range");
     // At least three 4-byte floats per vertex, one 4-byte count per face.
     if(static_cast<std::uintmax_t>(nv) * 12 + static_cast<std::uintmax_t>(nf) * 4 > file_size)
-      return fail(counts_line, "the header announces " + std::to_string(nv) + " vertices and " +
-                                   std::to_string(nf) + " faces, more than the " + std::to_string(file_size) +
+      return fail(counts_line, "the header announces " + count_text(static_cast<std::size_t>(nv), "vertex", "vertices") +
+                                   " and " + count_text(static_cast<std::size_t>(nf), "face") + ", more than the " + std::to_string(file_size) +
                                    " bytes of the file can hold");
     if(header_only)
       return scan;
@@ -295,8 +295,8 @@ inline Text_mesh_scan scan_off(const std::string& path, std::uintmax_t file_size
   // line at least its size and an end of line; the last line may have no end.
   const std::uintmax_t needed = static_cast<std::uintmax_t>(nv) * 6 + static_cast<std::uintmax_t>(nf) * 2;
   if(needed > file_size + 1)
-    return fail(counts_line, "the header announces " + std::to_string(nv) + " vertices and " +
-                                 std::to_string(nf) + " faces, more than the " + std::to_string(file_size) +
+    return fail(counts_line, "the header announces " + count_text(static_cast<std::size_t>(nv), "vertex", "vertices") +
+                                 " and " + count_text(static_cast<std::size_t>(nf), "face") + ", more than the " + std::to_string(file_size) +
                                  " bytes of the file can hold");
   if(header_only)
     return scan;
@@ -323,7 +323,7 @@ inline Text_mesh_scan scan_off(const std::string& path, std::uintmax_t file_size
     if(n == 0)
       return "has no colour, but an earlier one has";
     if(n != 1 && n != 3 && n != 4)
-      return "has " + std::to_string(n) + " colour components; expected 3 or 4";
+      return "has " + count_text(n, "colour component") + "; expected 3 or 4";
     if(n == 1)
       return entries[first] >= 0 && entries[first] < 149
                ? std::string()
@@ -378,7 +378,7 @@ inline Text_mesh_scan scan_off(const std::string& path, std::uintmax_t file_size
       return scan;
     }
     if(entries.size() < vertex_numbers && (colors || normals))
-      return fail(line, "vertex " + std::to_string(i) + " has " + std::to_string(entries.size()) + " numbers; " +
+      return fail(line, "vertex " + std::to_string(i) + " has " + count_text(entries.size(), "number") + "; " +
                             keyword + " needs " + std::to_string(vertex_numbers));
     if(colors) {
       const std::string problem = color_problem(entries, vertex_numbers - (texture ? 2 + h : 0),

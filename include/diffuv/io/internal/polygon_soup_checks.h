@@ -6,6 +6,7 @@
 #define DIFFUV_IO_INTERNAL_POLYGON_SOUP_CHECKS_H
 
 #include <diffuv/core/error.h>
+#include <diffuv/internal/message_text.h>
 #include <diffuv/io/internal/mesh_scan.h>
 
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
@@ -124,7 +125,7 @@ std::vector<bool> check_polygon_soup(const std::string& path, const std::vector<
     const Polygon& polygon = polygons[j];
     if(polygon.size() < 3)
       throw Input_error(path, locate.face_line(j), "face " + std::to_string(j) + " has only " +
-                                                      std::to_string(polygon.size()) + " vertices");
+                                                      count_text(polygon.size(), "vertex", "vertices"));
     for(std::size_t index : polygon) {
       if(index >= points.size()) {
         // CGAL's OBJ reader lets the index one past the last vertex through;

@@ -258,7 +258,7 @@ inline Paint_file read_off_paint(const std::string& path)
     if(n == 1)
       throw Input_error(path, line, item + " has a colour-map index; colour maps are not supported");
     if(n != 0 && n != 3 && n != 4)
-      throw Input_error(path, line, item + " has " + std::to_string(n) + " colour components; expected 3 or 4");
+      throw Input_error(path, line, item + " has " + count_text(n, "colour component") + "; expected 3 or 4");
     if(j > 0 && (n == 0) != e.color.empty())
       throw Input_error(path, line, item + (n == 0 ? " has no colour, but " : " has a colour, but ") + e.kind +
                                         " 0 " + (n == 0 ? "has one" : "has none"));

@@ -1,0 +1,245 @@
+// Tests of `diffuv param`: the uv table, OBJ and pictures it writes, patches
+// that cannot be mapped, --strict, --threads.
+#include "test_cli_tool.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace {
+
+using namespace diffuv_cli_test;
+
+TEST_F(Tool, NefertitiWithSquareCornersLandsOnTheUnitSquare)
+{
+  const Tool_run r = run("param " + nefertiti_with_square_corners() + " -o " + out_dir().string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("299 vertices, 562 faces"), std::string::npos) << r.out;
+  const auto rows = read_csv(out_dir() / "nefertiti.uv.csv");
+  ASSERT_EQ(rows.size(), 300u); // header + one row per vertex (one patch)
+  EXPECT_EQ(rows[0], (std::vector<std::string>{"vertex", "patch", "u", "v"}));
+  for(std::size_t i = 1; i < rows.size(); ++i) {
+    ASSERT_EQ(rows[i].size(), 4u);
+    const double u = std::stod(rows[i][2]), v = std::stod(rows[i][3]);
+    EXPECT_GE(u, 0.);
+    EXPECT_LE(u, 1.);
+    EXPECT_GE(v, 0.);
+    EXPECT_LE(v, 1.);
+  }
+  // square_corners.selection.txt lists 133 8 0 287: 133 is at (0,0), the
+  // others counter-clockwise along the border.
+  auto uv_of = [&](std::size_t vertex) { return std::make_pair(std::stod(rows[vertex + 1][2]), std::stod(rows[vertex + 1][3])); };
+  EXPECT_EQ(uv_of(133), std::make_pair(0., 0.));
+  std::vector<std::pair<double, double>> others = {uv_of(8), uv_of(0), uv_of(287)};
+  std::sort(others.begin(), others.end());
+  EXPECT_EQ(others, (std::vector<std::pair<double, double>>{{0., 1.}, {1., 0.}, {1., 1.}}));
+
+  const std::string obj = slurp(out_dir() / "nefertiti.obj");
+  std::size_t v = 0, f = 0, vt = 0;
+  std::stringstream ss(obj);
+  std::string line;
+  while(std::getline(ss, line)) {
+    if(line.rfind("v ", 0) == 0) ++v;
+    if(line.rfind("vt ", 0) == 0) ++vt;
+    if(line.rfind("f ", 0) == 0) ++f;
+  }
+  EXPECT_EQ(v, 299u);
+  EXPECT_EQ(vt, 299u); // one chart: one vt per vertex
+  EXPECT_EQ(f, 562u);
+}
+
+TEST_F(Tool, ClosedMeshesAreCutIntoPatchesAndEveryVertexIsMapped)
+{
+  const Tool_run r = run("param " + data_path("meshes/cow.off") + " -o " + out_dir().string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("fmm distances: automatic"), std::string::npos) << r.out;
+  const auto rows = read_csv(out_dir() / "cow.uv.csv");
+  std::set<std::size_t> mapped;
+  for(std::size_t i = 1; i < rows.size(); ++i) {
+    mapped.insert(std::stoul(rows[i][0]));
+    const double u = std::stod(rows[i][2]), v = std::stod(rows[i][3]);
+    EXPECT_TRUE(u >= 0 && u <= 1 && v >= 0 && v <= 1) << rows[i][0];
+  }
+  EXPECT_EQ(mapped.size(), diffuv_test::cgal_mesh("cow.off").number_of_vertices());
+  EXPECT_GT(rows.size() - 1, mapped.size()); // patch-border vertices have a row per patch
+
+  // The textured OBJ and the picture.
+  EXPECT_EQ(slurp(out_dir() / "cow.obj").rfind("mtllib cow.mtl\n", 0), 0u);
+  EXPECT_NE(slurp(out_dir() / "cow.mtl").find("map_Kd cow.checker.png"), std::string::npos);
+  for(const char* png : {"cow.png", "cow.checker.png"})
+    EXPECT_EQ(slurp(out_dir() / png).substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8)) << png;
+}
+
+// --threads changes nothing but the time; the summary says how long each
+// stage took.
+TEST_F(Tool, ThreadsGiveTheSameFilesAndStagesAreTimed)
+{
+  std::string tables[2];
+  for(int k = 0; k < 2; ++k) {
+    const std::string dir = (out_dir() / std::to_string(k)).string();
+    const Tool_run r = run("param " + data_path("meshes/man.off") + " --threads " + (k == 0 ? "1" : "2") + " -o " + dir);
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.out.find("\nstages: read "), std::string::npos) << r.out;
+    for(const char* stage : {", patches ", ", map ", ", measure ", ", write "})
+      EXPECT_NE(r.out.find(stage), std::string::npos) << stage << " in " << r.out;
+    tables[k] = slurp(fs::path(dir) / "man.uv.csv");
+  }
+  EXPECT_GT(tables[0].size(), 1000u);
+  EXPECT_EQ(tables[0], tables[1]);
+  const Tool_run bad = run("param " + data_path("meshes/man.off") + " --threads -1 -o " + out_dir().string());
+  EXPECT_EQ(bad.code, 2) << bad.err;
+  const Tool_run render = run("render " + data_path("meshes/cow.off") + " --threads 1 -o " + (out_dir() / "r").string());
+  EXPECT_EQ(render.code, 0) << render.err;
+}
+
+TEST_F(Tool, StrictReportsARegionThatIsNotADisc)
+{
+  // Two labels on nefertiti: a band across the middle is fine (a disc), but a
+  // ring around one vertex makes the outside an annulus.
+  const auto& m = diffuv_test::cgal_mesh("nefertiti.off");
+  std::ostringstream labels;
+  // The faces around a vertex whose neighbours are all interior: an inner disc.
+  diffuv_test::Mesh::Vertex_index inner;
+  for(auto v : vertices(m)) {
+    bool deep = !m.is_border(v);
+    for(auto w : vertices_around_target(m.halfedge(v), m)) deep = deep && !m.is_border(w);
+    if(deep) { inner = v; break; }
+  }
+  std::set<std::size_t> ring;
+  for(auto f : faces_around_target(m.halfedge(inner), m)) ring.insert(f.idx());
+  for(auto f : faces(m)) labels << (ring.count(f.idx()) ? 1 : 0) << '\n';
+  const std::string file = write("ring.txt", labels.str());
+  const Tool_run strict = run("param " + data_path("meshes/nefertiti.off") + " --labels " + file + " --strict -o " +
+                              out_dir().string());
+  EXPECT_EQ(strict.code, 1) << strict.out;
+  EXPECT_NE(strict.err.find(file + ": the mesh has several boundary loops"), std::string::npos) << strict.err;
+  EXPECT_FALSE(fs::exists(out_dir()));
+  const Tool_run repaired = run("param " + data_path("meshes/nefertiti.off") + " --labels " + file + " -o " +
+                                out_dir().string());
+  EXPECT_EQ(repaired.code, 0) << repaired.err;
+  EXPECT_NE(repaired.out.find("1 region not a disc (cut into cells)"), std::string::npos) << repaired.out;
+}
+
+TEST_F(Tool, APatchThatCannotBeMappedIsReportedAndTheOthersAreWritten)
+{
+  // nefertiti plus a separate triangle: three boundary vertices, no neighbour to merge into.
+  std::ifstream in(data_path("meshes/nefertiti.off"));
+  std::string header;
+  std::size_t nv, nf, ne;
+  in >> header >> nv >> nf >> ne;
+  std::ostringstream body;
+  body << in.rdbuf();
+  // The triangle's three points come first, so nefertiti's face indices shift by 3.
+  std::ostringstream fixed;
+  fixed << "OFF\n" << nv + 3 << ' ' << nf + 1 << " 0\n5 5 5\n6 5 5\n5 6 5\n";
+  std::istringstream rest(body.str());
+  for(std::size_t i = 0; i < nv; ++i) { double x, y, z; rest >> x >> y >> z; fixed << x << ' ' << y << ' ' << z << '\n'; }
+  for(std::size_t j = 0; j < nf; ++j) {
+    std::size_t k, a, b, c;
+    rest >> k >> a >> b >> c;
+    fixed << "3 " << a + 3 << ' ' << b + 3 << ' ' << c + 3 << '\n';
+  }
+  fixed << "3 0 1 2\n";
+  const std::string mesh = write("extra.off", fixed.str());
+
+  const Tool_run partial = run("param " + mesh + " -o " + out_dir().string());
+  EXPECT_EQ(partial.code, 0) << partial.err;
+  // nefertiti is cut automatically (two components: not a disc); only the triangle fails.
+  EXPECT_EQ(partial.err.rfind("diffuv: warning: 1 of ", 0), 0u) << partial.err;
+  EXPECT_NE(partial.err.find(" patches cannot be parameterized (see the table); their faces have no (u,v)\n"),
+            std::string::npos) << partial.err;
+  const std::string obj = slurp(out_dir() / "extra.obj");
+  EXPECT_EQ(obj.find("nan"), std::string::npos);
+  EXPECT_NE(obj.find("\nf 1 2 3\n"), std::string::npos); // the lone triangle, without vt
+  const auto rows = read_csv(out_dir() / "extra.uv.csv");
+  std::set<std::string> mapped;
+  for(std::size_t i = 1; i < rows.size(); ++i) mapped.insert(rows[i][0]);
+  EXPECT_EQ(mapped.size(), nv); // nefertiti's vertices, not the triangle's 0, 1, 2
+  EXPECT_EQ(mapped.count("0") + mapped.count("1") + mapped.count("2"), 0u);
+
+  fs::remove_all(out_dir());
+  const Tool_run strict = run("param " + mesh + " --strict -o " + out_dir().string());
+  EXPECT_EQ(strict.code, 1);
+  EXPECT_NE(strict.err.find(" patches cannot be parameterized; the first: the boundary has fewer than four vertices"),
+            std::string::npos) << strict.err;
+  EXPECT_FALSE(fs::exists(out_dir()));
+
+  const std::string lone = write("lone.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+  const Tool_run none = run("param " + lone + " -o " + out_dir().string());
+  EXPECT_EQ(none.code, 1);
+  EXPECT_EQ(none.err, "diffuv: error: " + lone +
+                          ": 1 of 1 patch cannot be parameterized; the first: the boundary has fewer than four vertices (patch 0)\n");
+  EXPECT_FALSE(fs::exists(out_dir()));
+}
+
+TEST_F(Tool, AnExistingOutputFolderKeepsOtherFiles)
+{
+  const std::string mesh = write("m.off", grid_off);
+  fs::create_directories(out_dir());
+  std::ofstream(out_dir() / "notes.txt") << "mine\n";
+  std::ofstream(out_dir() / "m.uv.csv") << "stale\n";
+  const Tool_run r = run("param " + mesh + " -o " + out_dir().string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(slurp(out_dir() / "notes.txt"), "mine\n");
+  EXPECT_EQ(slurp(out_dir() / "m.uv.csv").rfind("vertex,", 0), 0u);
+}
+
+// The lines of the table of patches: from the header to the totals.
+std::vector<std::string> table_lines(const std::string& out)
+{
+  std::vector<std::string> lines;
+  std::istringstream in(out.substr(out.find("\npatch ") + 1));
+  for(std::string line; std::getline(in, line);) {
+    lines.push_back(line);
+    if(line.rfind("total", 0) == 0) break;
+  }
+  return lines;
+}
+
+// Patch names are unique, and the same as other commands print (issue #19):
+// two components of one label were both "0".
+TEST_F(Tool, PatchNamesAreUnique)
+{
+  const std::string mesh = write("two.off", two_grids());
+  std::string zeros;
+  for(int f = 0; f < 16; ++f) zeros += "0\n";  // one label, two components
+  const std::string labels = write("zeros.txt", zeros);
+  const Tool_run r = run("param " + mesh + " --labels " + labels + " --layout voronoi -o " + out_dir().string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  std::vector<std::string> names;
+  for(const std::string& line : table_lines(r.out)) {
+    std::istringstream fields(line);
+    std::string patch, name;
+    fields >> patch >> name;
+    if(patch != "patch" && patch != "total") names.push_back(name);
+  }
+  EXPECT_EQ(names, (std::vector<std::string>{"0", "0#2"})) << r.out;
+}
+
+// Columns as wide as their widest entry (issue #19): a long label pushed its
+// row out of line.
+TEST_F(Tool, TheTableStaysAlignedForLargeValues)
+{
+  const std::string mesh = write("m.off", grid_off);
+  const std::string labels = write("l.txt", "1234567890\n1234567890\n1234567890\n1234567890\n7\n7\n7\n7\n");
+  const Tool_run r = run("param " + mesh + " --labels " + labels + " -o " + out_dir().string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::vector<std::string> lines = table_lines(r.out);
+  ASSERT_GE(lines.size(), 3u) << r.out;
+  EXPECT_NE(r.out.find(" 1234567890"), std::string::npos) << r.out;
+  for(const std::string& line : lines) {
+    EXPECT_EQ(line.size(), lines.front().size()) << line << "\n" << r.out;
+    // Every column ends where its title ends.
+    EXPECT_EQ(line.find_last_not_of(' ', lines.front().find("vertices") + 7), lines.front().find("vertices") + 7)
+        << line;
+  }
+}
+
+} // namespace

@@ -1,0 +1,97 @@
+// Tests of `diffuv segment`: the patches it writes read back as labels and as
+// paint; flat triangles handed to a neighbour.
+#include "test_cli_tool.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace {
+
+using namespace diffuv_cli_test;
+
+TEST_F(Tool, SegmentWritesPatchesThatReadBackAsLabelsAndAsPaint)
+{
+  const Tool_run seg = run("segment " + data_path("meshes/cow.off") + " -o " + out_dir().string());
+  ASSERT_EQ(seg.code, 0) << seg.err;
+  const fs::path labels = out_dir() / "cow.patches.txt";
+  const fs::path ply = out_dir() / "cow.patches.ply";
+  ASSERT_TRUE(fs::exists(labels));
+  ASSERT_TRUE(fs::exists(ply));
+
+  // The label file as --labels: the same patches come back (same count, none cut or split).
+  const Tool_run with_labels = run("param " + data_path("meshes/cow.off") + " --labels " + labels.string() + " -o " +
+                                   (dir_ / "a").string());
+  ASSERT_EQ(with_labels.code, 0) << with_labels.err;
+  EXPECT_NE(with_labels.out.find("(the regions, kept whole)"), std::string::npos) << with_labels.out;
+  EXPECT_TRUE(slurp(dir_ / "a" / "cow.patches.txt") == slurp(labels));
+
+  // The coloured PLY as the mesh: its painted regions are used, same patches.
+  const Tool_run painted = run("param " + ply.string() + " -o " + (dir_ / "b").string());
+  ASSERT_EQ(painted.code, 0) << painted.err;
+  EXPECT_NE(painted.out.find("painted"), std::string::npos) << painted.out;
+  // Outputs named once (issue #19): after the PLY, whose name ends in .patches already.
+  EXPECT_TRUE(slurp(dir_ / "b" / "cow.patches.txt") == slurp(labels));
+  EXPECT_TRUE(fs::exists(dir_ / "b" / "cow.patches.obj"));
+  for(const auto& e : fs::directory_iterator(dir_ / "b"))
+    EXPECT_EQ(e.path().filename().string().find("patches.patches"), std::string::npos) << e.path();
+}
+
+// Issue #5: a face left flat by its sides that no corners can mend (a small
+// patch of anchor with more ears than corners) goes to a neighbouring patch;
+// --keep-flat-triangles keeps it (and says nothing).
+TEST_F(Tool, SegmentHandsFlatFacesToANeighbourUnlessKept)
+{
+  const std::string anchor = data_path("meshes/anchor.off");
+  const Tool_run handed = run("segment " + anchor + " -o " + (dir_ / "a").string());
+  ASSERT_EQ(handed.code, 0) << handed.err;
+  const auto clause = handed.out.find(" handed to a neighbour");
+  ASSERT_NE(clause, std::string::npos) << handed.out;
+  const auto noun = handed.out.rfind(" flat triangle", clause);
+  ASSERT_NE(noun, std::string::npos) << handed.out;
+  const std::size_t count = std::stoul(handed.out.substr(handed.out.rfind(' ', noun - 1) + 1));
+  EXPECT_GT(count, 0u);
+  const Tool_run kept = run("segment " + anchor + " --keep-flat-triangles -o " + (dir_ / "b").string());
+  ASSERT_EQ(kept.code, 0) << kept.err;
+  EXPECT_EQ(kept.out.find("handed"), std::string::npos) << kept.out;
+
+  // The two label files differ in exactly the faces handed.
+  std::istringstream a(slurp(dir_ / "a" / "anchor.patches.txt")), b(slurp(dir_ / "b" / "anchor.patches.txt"));
+  std::string la, lb;
+  std::size_t lines = 0, different = 0;
+  while(std::getline(a, la) && std::getline(b, lb)) {
+    ++lines;
+    different += la != lb;
+  }
+  EXPECT_EQ(lines, 1050u);
+  EXPECT_EQ(different, count);
+}
+
+TEST_F(Tool, PatchesOfAPolygonMeshReadBackAsLabels)
+{
+  // cube_quad.off has quads: patches.txt has one line per quad, the file's faces.
+  const Tool_run seg = run("segment " + data_path("meshes/cube_quad.off") + " -o " + out_dir().string());
+  ASSERT_EQ(seg.code, 0) << seg.err;
+  const fs::path labels = out_dir() / "cube_quad.patches.txt";
+  std::ifstream in(labels);
+  std::size_t lines = 0;
+  for(std::string l; std::getline(in, l);) ++lines;
+  EXPECT_EQ(lines, 6u);
+  const Tool_run param = run("param " + data_path("meshes/cube_quad.off") + " --labels " + labels.string() + " -o " +
+                             (dir_ / "p").string());
+  EXPECT_EQ(param.code, 0) << param.err;
+}
+
+// Counts agree in number (issue #19): a disc was "1 patches".
+TEST_F(Tool, SegmentCountsAgreeInNumber)
+{
+  const Tool_run r = run("segment " + write("m.off", grid_off) + " -o " + out_dir().string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find(": 9 vertices, 8 faces\n1 patch (the whole disc), 8 to 8 faces each; "), std::string::npos)
+      << r.out;
+}
+
+} // namespace
