@@ -39,25 +39,6 @@ using Poly = CGAL::Polyhedron_3<SC_kernel>;
 using Poly_vertex = boost::graph_traits<Poly>::vertex_descriptor;
 using Poly_halfedge = boost::graph_traits<Poly>::halfedge_descriptor;
 
-std::vector<std::size_t> selection_indices(const std::string& file)
-{
-  std::ifstream in(data_path("selections/" + file));
-  std::string line;
-  std::getline(in, line);
-  std::istringstream ss(line);
-  std::vector<std::size_t> indices;
-  std::size_t i;
-  while(ss >> i) indices.push_back(i);
-  return indices;
-}
-
-std::vector<vertex_descriptor> selection_corners(const std::string& file)
-{
-  std::vector<vertex_descriptor> corners;
-  for(std::size_t i : selection_indices(file)) corners.push_back(vertex_descriptor(static_cast<Mesh::size_type>(i)));
-  return corners;
-}
-
 Poly read_polyhedron(const std::string& name)
 {
   Poly poly;

@@ -36,19 +36,6 @@ using Seam_vertex_pmap = Mesh::Property_map<vertex_descriptor, bool>;
 using Tube_seam_mesh = CGAL::Seam_mesh<Mesh, Seam_edge_pmap, Seam_vertex_pmap>;
 using Seam_vertex = boost::graph_traits<Tube_seam_mesh>::vertex_descriptor;
 
-// The corners of a CGAL selection file (its first line: vertex indices).
-std::vector<vertex_descriptor> selection_corners(const std::string& file)
-{
-  std::ifstream in(data_path("selections/" + file));
-  std::string line;
-  std::getline(in, line);
-  std::istringstream ss(line);
-  std::vector<vertex_descriptor> corners;
-  std::size_t i;
-  while(ss >> i) corners.push_back(vertex_descriptor(static_cast<Mesh::size_type>(i)));
-  return corners;
-}
-
 TEST(CgalParameterizer, ClosedMeshIsNotADisc)
 {
   Mesh cow = cgal_mesh("cow.off");

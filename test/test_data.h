@@ -6,6 +6,7 @@
 #define DIFFUV_TEST_DATA_H
 
 #include <diffuv/core/error.h>
+#include <diffuv/io/selection_file.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/IO/Color.h>
@@ -59,6 +60,20 @@ inline const Mesh& cgal_mesh(const std::string& name)
 /// cell cut into two counter-clockwise triangles (normals along +z). Vertex
 /// (i, j) has index j * nx + i with nx = xs.size(); cell (i, j) is faces
 /// 2 (j (nx - 1) + i) (lower right triangle) and 2 (j (nx - 1) + i) + 1.
+// The vertex indices of a CGAL selection file (data/selections/), and the
+// same as vertices of a Mesh.
+inline std::vector<std::size_t> selection_indices(const std::string& file)
+{
+  return diffuv::read_selection_file(data_path("selections/" + file));
+}
+
+inline std::vector<Mesh::Vertex_index> selection_corners(const std::string& file)
+{
+  std::vector<Mesh::Vertex_index> corners;
+  for(std::size_t i : selection_indices(file)) corners.push_back(Mesh::Vertex_index(static_cast<Mesh::size_type>(i)));
+  return corners;
+}
+
 inline Mesh make_grid_at(const std::vector<double>& xs, const std::vector<double>& ys)
 {
   Mesh m;

@@ -29,18 +29,6 @@ std::vector<vertex_descriptor> grid_corners(std::size_t nx, std::size_t ny)
   return {grid_vertex(nx, 0, 0), grid_vertex(nx, nx, 0), grid_vertex(nx, nx, ny), grid_vertex(nx, 0, ny)};
 }
 
-std::vector<vertex_descriptor> selection_corners(const std::string& file)
-{
-  std::ifstream in(data_path("selections/" + file));
-  std::string line;
-  std::getline(in, line);
-  std::istringstream ss(line);
-  std::vector<vertex_descriptor> corners;
-  std::size_t i;
-  while(ss >> i) corners.push_back(vertex_descriptor(static_cast<Mesh::size_type>(i)));
-  return corners;
-}
-
 // ---- diffusion_ratio: the edge cases of equation (2) ----------------------------
 
 TEST(DiffusionRatio, DefinedEdgeCases)
