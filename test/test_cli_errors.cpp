@@ -115,6 +115,8 @@ TEST_F(Tool, ValuesTheToolCannotUseAreRefused)
       {"param " + mesh + " --azimuth 10 --view front", "--view excludes --azimuth"},
       {"correspond " + mesh + ' ' + mesh + " --labels-b " + mesh + " --transfer-labels",  // --transfer-labels was ignored
        "--labels-b excludes --transfer-labels"},
+      {"param " + mesh + " --no-split-caps", "--no-split-caps: applies to --layout voronoi only"},  // was ignored
+      {"segment " + mesh + " --layout quads --no-split-caps", "--no-split-caps: applies to --layout voronoi only"},
   };
   for(const auto& [args, reason] : cases) {
     const Tool_run r = run(args + " -o " + out_dir().string());

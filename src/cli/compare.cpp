@@ -143,6 +143,7 @@ std::optional<std::vector<Point_2>> diffuv_patch(const Mesh& mesh, const Patch& 
 void run_compare(const Compare_options& options)
 {
   const std::vector<Method> methods = parse_methods(options);
+  check_patch_options(options.patches);
   if(!options.corners.empty() && !options.patches.labels.empty())
     throw CLI::ValidationError("--corners", "applies to a disc mesh without --labels");
   const std::string mesh_path = options.mesh.empty() ? default_mesh("nefertiti.off") : options.mesh;

@@ -93,6 +93,14 @@ inline void add_patch_options(CLI::App* cmd, Patch_cli_options& o)
   cmd->add_flag("--strict", o.strict, "Report a region that is not a disc instead of cutting it into discs");
 }
 
+/// Refuses option combinations that would be silently ignored.
+/// \throws CLI::ValidationError (a usage error)
+inline void check_patch_options(const Patch_cli_options& o)
+{
+  if(o.no_split_caps && o.layout != "voronoi")
+    throw CLI::ValidationError("--no-split-caps", "applies to --layout voronoi only (the quads layout splits caps its own way)");
+}
+
 /// Runs `f` with the distance tag named by --distance (graph, exact, else fmm).
 template <class F>
 auto with_distance(const std::string& name, F f)

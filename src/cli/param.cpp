@@ -28,6 +28,7 @@ namespace {
 void run_param(const Param_options& options)
 {
   picture_size(options.size); // a bad --size is a usage error before any work
+  check_patch_options(options.patches);
   if(!options.corners.empty() && (!options.patches.labels.empty()))
     throw CLI::ValidationError("--corners", "applies to a disc mesh without --labels");
   const std::string mesh_path = options.mesh.empty() ? default_mesh("cow.off") : options.mesh;

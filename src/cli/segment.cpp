@@ -24,6 +24,7 @@ struct Segment_options {
 
 void run_segment(const Segment_options& options)
 {
+  check_patch_options(options.patches);
   const std::string mesh_path = options.mesh.empty() ? default_mesh("cow.off") : options.mesh;
   const Input_mesh in = read_input(mesh_path, options.patches);
   diffuv::Patching_report report;
