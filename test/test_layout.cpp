@@ -243,6 +243,40 @@ TEST(QuadLayout, JudgeRemembersQuadsAndAnswersAsAFreshOne)
   }
 }
 
+// The layout asks the judge only about patches whose cell it could refine
+// (a judge that takes flags maps no other patch): the layout is the same as
+// with a judge asked about every patch, and a judge asked about some patches
+// answers for them as it does when asked about all.
+TEST(QuadLayout, JudgeAskedAboutRefinablePatchesOnlyGivesTheSameLayout)
+{
+  const Mesh& cow = cgal_mesh("cow.off");
+  using Judge = diffuv::Raw_map_judge<Mesh, decltype(cow.points())>;
+  const Judge flags(cow, cow.points());
+  const Judge whole(cow, cow.points());
+  struct Asked_about_all {  // takes no flags
+    const Judge* judge;
+    std::vector<std::size_t> operator()(const Seg& layout) const { return (*judge)(layout); }
+    std::size_t choose_corners(Seg& seg) const { return judge->choose_corners(seg); }
+  };
+  const Asked_about_all asked_about_all{&whole};
+  Seg with_flags, without;
+  diffuv::Patching_report report_flags, report_all;
+  ASSERT_TRUE(diffuv::disc_patches(cow, cow.points(), {}, with_flags, diffuv::Patching_options(), &report_flags, flags).ok());
+  ASSERT_TRUE(diffuv::disc_patches(cow, cow.points(), {}, without, diffuv::Patching_options(), &report_all, asked_about_all).ok());
+  ASSERT_GT(report_all.layout.refined_cells, 0u) << "the judge should refine some cells of cow";
+  EXPECT_EQ(report_flags.layout.refined_cells, report_all.layout.refined_cells);
+  EXPECT_EQ(with_flags.patch_faces, without.patch_faces);
+  EXPECT_EQ(with_flags.patch_corners, without.patch_corners);
+
+  std::vector<char> odd(with_flags.number_of_patches(), 0);
+  for(std::size_t p = 1; p < odd.size(); p += 2) odd[p] = 1;
+  std::vector<std::size_t> expected;
+  for(std::size_t p : Judge(cow, cow.points())(with_flags))
+    if(odd[p]) expected.push_back(p);
+  ASSERT_FALSE(expected.empty());
+  EXPECT_EQ(Judge(cow, cow.points())(with_flags, odd), expected);
+}
+
 TEST(QuadLayout, BearMeetsTheStretchTargetsOnceRefinedAndNearFoldsMended)
 {
   // The default pipeline of `diffuv param`: the layout refined by the judge,

@@ -44,6 +44,7 @@
 #include <map>
 #include <memory>
 #include <numeric>
+#include <type_traits>
 #include <vector>
 
 namespace diffuv {
@@ -108,6 +109,29 @@ struct No_refinement {
 
 namespace internal {
 
+template <class Judge, class Seg, class = void>
+struct judges_candidates : std::false_type {};
+template <class Judge, class Seg>
+struct judges_candidates<Judge, Seg, std::void_t<decltype(std::declval<const Judge&>()(
+                                         std::declval<const Seg&>(), std::declval<const std::vector<char>&>()))>>
+  : std::true_type {};
+
+// The judge's verdict on the patches flagged in `candidates` (a judge that
+// takes no flags judges them all; only flagged ones are kept).
+template <class Judge, class TriangleMesh>
+std::vector<std::size_t> judge_candidates(const Judge& judge, const Segmentation<TriangleMesh>& layout,
+                                          const std::vector<char>& candidates)
+{
+  if constexpr(judges_candidates<Judge, Segmentation<TriangleMesh>>::value) {
+    return judge(layout, candidates);
+  } else {
+    std::vector<std::size_t> bad = judge(layout);
+    bad.erase(std::remove_if(bad.begin(), bad.end(), [&](std::size_t p) { return p >= candidates.size() || !candidates[p]; }),
+              bad.end());
+    return bad;
+  }
+}
+
 // The cells of one region: Voronoi cells of its faces, seeds kept between rounds.
 template <class TriangleMesh, class VertexPointMap>
 struct Region_cells {
@@ -136,7 +160,9 @@ struct Region_cells {
 /// not refined), for at most `refine_rounds` rounds. The parameterization
 /// layer provides a judge that maps each patch (`raw_map_judge()`).
 ///
-/// \tparam Judge callable as `std::vector<std::size_t>(const Segmentation<TriangleMesh>&)`
+/// \tparam Judge callable as `std::vector<std::size_t>(const Segmentation<TriangleMesh>&)`;
+///         if also callable with a second argument `const std::vector<char>&` (one flag per
+///         patch), it is asked about the patches that could be refined only
 /// \param face_labels #F labels, or empty: the components are the regions;
 ///        faces labelled `std::numeric_limits<int>::min()` are left out
 /// \param kind what the labels are
@@ -328,16 +354,27 @@ Status quad_layout(const TriangleMesh& tm, VertexPointMap vpm, const std::vector
     r.rounds = round;
     r.refined_cells = refined_so_far;
     if(round >= options.refine_rounds) break;
-    const std::vector<std::size_t> bad = judge(static_cast<const Segmentation<TriangleMesh>&>(layout));
+    // Only the cell holding most of a patch may be refined, and only if it is
+    // large enough: the judge need not map patches of smaller cells.
+    std::vector<std::size_t> cell_of_patch(layout.number_of_patches(), cells.number_of_patches());
+    std::vector<char> refinable(layout.number_of_patches(), 0);
+    for(std::size_t p = 0; p < layout.number_of_patches(); ++p) {
+      std::map<std::size_t, std::size_t> count;
+      for(face_descriptor f : layout.patch_faces[p]) ++count[cells.face_patch[get(findex, f)]];
+      if(count.empty()) continue;
+      const std::size_t c =
+          std::max_element(count.begin(), count.end(), [](const auto& a, const auto& b) { return a.second < b.second; })->first;
+      cell_of_patch[p] = c;
+      refinable[p] = c < cells.number_of_patches() && cells.patch_faces[c].size() >= options.min_split_faces;
+    }
+    const std::vector<std::size_t> bad =
+        internal::judge_candidates(judge, static_cast<const Segmentation<TriangleMesh>&>(layout), refinable);
     std::vector<char> refined(cells.number_of_patches(), 0);
     std::vector<std::pair<std::size_t, std::size_t>> added;
     for(std::size_t p : bad) {
-      if(p >= layout.number_of_patches()) continue;
-      std::map<std::size_t, std::size_t> count;
-      for(face_descriptor f : layout.patch_faces[p]) ++count[cells.face_patch[get(findex, f)]];
-      const std::size_t c =
-          std::max_element(count.begin(), count.end(), [](const auto& a, const auto& b) { return a.second < b.second; })->first;
-      if(c >= cells.number_of_patches() || refined[c] || cells.patch_faces[c].size() < options.min_split_faces) continue;
+      if(p >= layout.number_of_patches() || !refinable[p]) continue;
+      const std::size_t c = cell_of_patch[p];
+      if(refined[c]) continue;
       refined[c] = 1;
       const std::size_t s = farthest_in(region_of_cell[c], layout.patch_faces[p]);
       if(s < region_cells[region_of_cell[c]].voronoi->faces().size()) added.emplace_back(region_of_cell[c], s);

@@ -189,15 +189,27 @@ public:
   /// \returns the positions of the patches of `layout` to refine, in increasing order
   std::vector<std::size_t> operator()(const Segmentation<TriangleMesh>& layout) const
   {
+    return (*this)(layout, std::vector<char>(layout.number_of_patches(), 1));
+  }
+
+  /// The same, for the patches flagged in `candidates` only (#patches
+  /// entries): the others are neither mapped nor returned.
+  std::vector<std::size_t> operator()(const Segmentation<TriangleMesh>& layout, const std::vector<char>& candidates) const
+  {
     const std::size_t n = layout.number_of_patches();
     std::vector<std::size_t> bad;
-    // The patches to map: those without corners and those not judged before.
-    // The others are emptied, not removed, so that the numbering stays and a
-    // patch without corners sees the same neighbours.
+    // The patches to map: the candidates without corners and those not judged
+    // before. The others are emptied, not removed, so that the numbering stays
+    // and a patch without corners sees the same neighbours.
     Segmentation<TriangleMesh> to_map = layout;
     std::vector<std::vector<std::size_t>> keys(n);
     std::vector<char> wanted(n, 1);
     for(std::size_t p = 0; p < n; ++p) {
+      if(p >= candidates.size() || !candidates[p]) {
+        wanted[p] = 0;
+        to_map.patch_faces[p].clear();
+        continue;
+      }
       if(!layout.corners(p)) continue;
       keys[p] = key_of(layout, p);
       const auto found = verdicts_->find(keys[p]);
