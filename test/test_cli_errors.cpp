@@ -116,6 +116,8 @@ TEST_F(Tool, ValuesTheToolCannotUseAreRefused)
       {"correspond " + mesh + ' ' + mesh + " --labels-b " + mesh + " --transfer-labels",  // --transfer-labels was ignored
        "--labels-b excludes --transfer-labels"},
       {"param " + mesh + " --no-split-caps", "--no-split-caps: applies to --layout voronoi only"},  // was ignored
+      {"param " + mesh + " --patches abc", "expects a whole number from 1 to 100000, not 'abc'"},  // was "not in range"
+      {"render " + mesh + " --azimuth 500", "expects a number from -360 to 360, not '500'"},
       {"segment " + mesh + " --layout quads --no-split-caps", "--no-split-caps: applies to --layout voronoi only"},
   };
   for(const auto& [args, reason] : cases) {

@@ -34,6 +34,21 @@ TEST(CliText, SizeIsTwoWholeNumbersJoinedByAnX)
     EXPECT_EQ(diffuv_cli::parse_size(bad), std::nullopt) << '"' << bad << '"';
 }
 
+// A number option's text is checked before it is converted: what is not a
+// number is not called "out of range".
+TEST(CliText, NumbersAreCheckedAsTextWithTheReason)
+{
+  using diffuv_cli::range_problem;
+  for(const char* good : {"1", "100000", "42", "+7"}) EXPECT_EQ(range_problem(good, 1, 100000, true), "") << good;
+  EXPECT_EQ(range_problem("abc", 1, 100000, true), "expects a whole number from 1 to 100000, not 'abc'");
+  for(const char* bad : {"0", "-3", "100001", "1e3", "2.5", "", " 5", "5 ", "5x", "99999999999999999999999"})
+    EXPECT_NE(range_problem(bad, 1, 100000, true), "") << '"' << bad << '"';
+  EXPECT_EQ(range_problem("-12.5", -360, 360, false), "");
+  EXPECT_EQ(range_problem("1e2", -360, 360, false), "");
+  for(const char* bad : {"500", "nan", "inf", "1e999", "ten", "-360.5"})
+    EXPECT_EQ(range_problem(bad, -360, 360, false), std::string("expects a number from -360 to 360, not '") + bad + "'") << bad;
+}
+
 TEST(CliText, ListItemsLoseTheSpacesAroundThem)
 {
   using List = std::vector<std::string>;

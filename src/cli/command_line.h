@@ -3,7 +3,11 @@
 #ifndef DIFFUV_CLI_COMMAND_LINE_H
 #define DIFFUV_CLI_COMMAND_LINE_H
 
+#include <cctype>
+#include <cerrno>
+#include <cmath>
 #include <cstddef>
+#include <cstdlib>
 #include <filesystem>
 #include <optional>
 #include <sstream>
@@ -16,6 +20,27 @@ namespace diffuv_cli {
 /// The smallest and largest width or height of a picture (`--size`).
 constexpr int smallest_picture_side = 16;
 constexpr int largest_picture_side = 8192;
+
+/// What is wrong with `text` as a number from `low` to `high` (a whole number
+/// if `whole`), or an empty string: "expects a whole number from 1 to 100000,
+/// not 'abc'". The whole text must be the number (no spaces, no unit).
+inline std::string range_problem(const std::string& text, double low, double high, bool whole)
+{
+  auto bound = [](double x) {
+    std::ostringstream out;
+    out << x;
+    return out.str();
+  };
+  const std::string expected = std::string("expects ") + (whole ? "a whole number" : "a number") + " from " + bound(low) +
+                               " to " + bound(high) + ", not '" + text + "'";
+  if(text.empty() || std::isspace(static_cast<unsigned char>(text.front()))) return expected;
+  char* end = nullptr;
+  errno = 0;
+  const double value = whole ? static_cast<double>(std::strtoll(text.c_str(), &end, 10)) : std::strtod(text.c_str(), &end);
+  if(end != text.c_str() + text.size() || errno == ERANGE || !std::isfinite(value)) return expected;
+  if(value < low || value > high) return expected;
+  return std::string();
+}
 
 /// `--size WxH`: two whole numbers of pixels joined by an `x`, each from
 /// `smallest_picture_side` to `largest_picture_side`, nothing before, between

@@ -232,7 +232,7 @@ void run_compare(const Compare_options& options)
         if(why.empty()) ms = median(times);
       }
       if(chart_vertices.empty()) {
-        if(r.failed++ == 0) r.first_failure = "patch " + std::to_string(p) + ": " + why;
+        if(r.failed++ == 0) r.first_failure = why.rfind("patch ", 0) == 0 ? why : "patch " + std::to_string(p) + ": " + why;
         continue;
       }
       r.milliseconds += ms;
@@ -309,7 +309,7 @@ void add_compare_command(CLI::App& app)
       ->capture_default_str();
   cmd->add_flag("--no-repair", options->no_repair, "The 'diffuv' method keeps its folds (see diffuv param --help)");
   cmd->add_option("--runs", options->runs, "Runs of each method on each patch; the median time is reported")
-      ->check(CLI::Range(1, 1000))
+      ->check(number_in(1, 1000))
       ->capture_default_str();
   cmd->add_option("-o,--output", options->output, "Also write each method's map as OUTPUT/<mesh>.<method>.obj")
       ->check(output_folder_check());

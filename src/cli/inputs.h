@@ -65,6 +65,15 @@ inline std::string default_mesh(const std::string& name)
   return data_folder(name, std::getenv("DIFFUV_DATA_DIR"), installed, DIFFUV_DEFAULT_DATA_DIR) + "/meshes/" + name;
 }
 
+/// Checks a number option's text before it is converted: a value that is not
+/// a number, or out of [low, high], is a usage error that says which.
+inline CLI::Validator number_in(double low, double high, bool whole = true)
+{
+  std::ostringstream name;
+  name << (whole ? "INT in [" : "NUMBER in [") << low << " - " << high << "]";
+  return CLI::Validator([=](const std::string& s) { return range_problem(s, low, high, whole); }, name.str());
+}
+
 inline void add_patch_options(CLI::App* cmd, Patch_cli_options& o)
 {
   cmd->add_option("--labels", o.labels,
@@ -74,16 +83,16 @@ inline void add_patch_options(CLI::App* cmd, Patch_cli_options& o)
   cmd->add_option("--layout", o.layout,
                   "How patches are made where no labels say: quads (four-sided patches, conforming, refined until each "
                   "patch's raw map is good; labelled regions are split into them too) or voronoi (Voronoi cells whose "
-                  "runs of neighbours are merged into four sides, diffuv 0.1's patches)")
+                  "runs of neighbours are merged into four sides: the patches of diffuv 0.1)")
       ->check(CLI::IsMember({"quads", "voronoi"}))
       ->capture_default_str();
   cmd->add_option("--patches", o.patches,
                   "quads: seeds for about N patches to start from (default: one cell per 900 faces, about five "
                   "patches each); the cell-complex rules and the refinement then add cells where the surface needs "
-                  "them, so below a few hundred they decide the count (cow: 229 patches for N = 1 to 6, 270 by "
-                  "default, 272 for 100); voronoi: N seeds to start from (default 12; more are added until every "
+                  "them, so below a few hundred they decide the count (cow: 231 patches for N = 1 to 6, 278 by "
+                  "default, 287 for 100, 358 for 300); voronoi: N seeds to start from (default 12; more are added until every "
                   "patch is a disc)")
-      ->check(CLI::Range(std::size_t(1), std::size_t(100000)));
+      ->check(number_in(1, 100000));
   cmd->add_flag("--no-split-caps", o.no_split_caps,
                 "voronoi layout: keep caps (patches with one neighbour all around, like a hand or an ear) whole "
                 "instead of splitting them in two");

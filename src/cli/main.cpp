@@ -14,7 +14,7 @@ int main(int argc, char** argv)
   CLI::App app{"diffuv: diffusion-based surface parameterization (CGAL)\n"
                "Each vertex of a disc patch gets u = d_u1/(d_u1+d_u2), v = d_v1/(d_v1+d_v2) from its\n"
                "distances to the four sides of the patch; folds are then repaired."};
-  app.set_version_flag("--version", "diffuv 0.1.0");
+  app.set_version_flag("--version", "diffuv " DIFFUV_VERSION);
   app.require_subcommand(1);
   diffuv_cli::add_param_command(app);
   diffuv_cli::add_render_command(app);

@@ -115,7 +115,7 @@ void add_common_options(CLI::App* cmd, Param_options& o)
   cmd->add_option("--threads", o.threads,
                   "Threads mapping the patches: 0 = every core, 1 = one after the other (the results are the same; "
                   "more threads than cores are not used)")
-      ->check(CLI::Range(std::size_t(0), std::size_t(1024)))
+      ->check(number_in(0, 1024))
       ->capture_default_str();
   cmd->add_option("mesh", o.mesh,
                   "Triangle mesh (OFF, OBJ, PLY, STL). A disc is one patch; any other mesh is cut into disc patches. "
@@ -152,18 +152,18 @@ void add_common_options(CLI::App* cmd, Param_options& o)
       cmd->add_option("--azimuth", o.azimuth,
                       "Camera azimuth in degrees around the y axis (0: looking along -z, as front); instead of --view")
           ->check(finite)
-          ->check(CLI::Range(-360., 360.));
+          ->check(number_in(-360, 360, false));
   azimuth->excludes(view);
   cmd->add_option("--elevation", o.elevation, "Camera elevation in degrees (needs --azimuth)")
       ->check(finite)
-      ->check(CLI::Range(-90., 90.))
+      ->check(number_in(-90, 90, false))
       ->needs(azimuth)
       ->capture_default_str();
   cmd->add_option("--size", o.size, "Size of the picture, WxH pixels")->capture_default_str();
   cmd->add_option("--isolines", o.isolines, "u and v isolines every 1/N in the picture (0: none)")
-      ->check(CLI::Range(0, 1000))
+      ->check(number_in(0, 1000))
       ->capture_default_str();
-  cmd->add_option("--color", o.color,
+  cmd->add_option("--color,--colour", o.color,
                   "Face colours of the picture: patches, angle (sigma_max/sigma_min) or area distortion, as a heat "
                   "map from 1 to 10 (log scale; flipped faces magenta)")
       ->check(CLI::IsMember({"patches", "angle", "area"}))
@@ -188,7 +188,7 @@ void add_param_command(CLI::App& app)
                 "Write every chart on the unit square (the canonical (u,v)) instead of on a rectangle of its own "
                 "aspect (the aspect with the least stretch for the chart's map); the table then measures the squares");
   cmd->add_option("--runs", options->runs, "Run the parameterization N times and report the median time")
-      ->check(CLI::Range(1, 1000))
+      ->check(number_in(1, 1000))
       ->capture_default_str();
   cmd->footer(std::string("Writes OUTPUT/<mesh>.obj (v in input order, one vt per distinct (vertex, uv)), "
               "OUTPUT/<mesh>.uv.csv (vertex,patch,u,v), OUTPUT/<mesh>.mtl and <mesh>.checker.png (the OBJ's material "

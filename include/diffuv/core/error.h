@@ -69,21 +69,28 @@ inline const char* message(Status_code code)
   return "unknown status"; // unreachable for valid enum values
 }
 
-/// The outcome of an algorithm: a code and a detail naming what is concerned.
+/// The outcome of an algorithm: a code, a detail naming what is concerned,
+/// and the part of the input the message is about when it is not the whole
+/// mesh (e.g. "patch 3 (label 1)").
 struct Status {
   Status_code code = Status_code::ok;
   std::string detail;
+  std::string subject;  ///< empty: the message is about the mesh
 
   Status() = default;
-  Status(Status_code c, std::string d = {}) : code(c), detail(std::move(d)) {}
+  Status(Status_code c, std::string d = {}, std::string about = {})
+    : code(c), detail(std::move(d)), subject(std::move(about)) {}
 
   bool ok() const { return code == Status_code::ok; }
   explicit operator bool() const { return ok(); }
 
-  /// The message, followed by the detail when there is one.
+  /// The message about the subject, followed by the detail when there is one:
+  /// "patch 3 (label 1) has several boundary loops, not a topological disc (2 boundary loops)".
   std::string what() const
   {
     std::string s = message(code);
+    const std::string mesh = "the mesh ";
+    if(!subject.empty()) s = s.compare(0, mesh.size(), mesh) == 0 ? subject + ' ' + s.substr(mesh.size()) : subject + ": " + s;
     if(!detail.empty()) s += " (" + detail + ")";
     return s;
   }

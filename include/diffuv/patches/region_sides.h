@@ -108,10 +108,10 @@ Status region_sides(const TriangleMesh& tm, VertexPointMap vpm, const Segmentati
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
   const auto loops = patch_loops(tm, vpm, seg, p);
   if(loops.size() != 1)
-    return Status(Status_code::several_borders, "patch " + std::to_string(p));
+    return Status(Status_code::several_borders, "", "patch " + std::to_string(p));
   const Patch_loop<TriangleMesh>& loop = loops.front();
   const std::size_t n = loop.vertices.size();
-  if(n < 4) return Status(Status_code::border_too_short, "patch " + std::to_string(p));
+  if(n < 4) return Status(Status_code::border_too_short, "", "patch " + std::to_string(p));
   Side_report local_report;
   Side_report& r = report ? *report : local_report;
   r = Side_report();
@@ -195,7 +195,7 @@ Status region_sides(const TriangleMesh& tm, VertexPointMap vpm, const Segmentati
         best_middle = m;
       }
     }
-    if(best_run == k) return Status(Status_code::border_too_short, "patch " + std::to_string(p));
+    if(best_run == k) return Status(Status_code::border_too_short, "", "patch " + std::to_string(p));
     corners.push_back(best_middle);
     std::sort(corners.begin(), corners.end());
     ++r.split;

@@ -161,8 +161,7 @@ Status check_patch_disc(const TriangleMesh& tm, const Segmentation<TriangleMesh>
 {
   const auto& pf = seg.patch_faces[p];
   auto fail = [&](Status_code code, const std::string& what) {
-    return Status(code, "patch " + std::to_string(p) + " (label " + std::to_string(seg.patch_label[p]) + ")" +
-                            (what.empty() ? "" : ": " + what));
+    return Status(code, what, "patch " + std::to_string(p) + " (label " + std::to_string(seg.patch_label[p]) + ")");
   };
   if(pf.empty()) return fail(Status_code::empty_mesh, "");
   auto findex = get(boost::face_index, tm);
