@@ -90,8 +90,20 @@ TEST_F(Tool, SegmentCountsAgreeInNumber)
 {
   const Tool_run r = run("segment " + write("m.off", grid_off) + " -o " + out_dir().string());
   ASSERT_EQ(r.code, 0) << r.err;
-  EXPECT_NE(r.out.find(": 9 vertices, 8 faces\n1 patch (the whole disc), 8 to 8 faces each; "), std::string::npos)
+  EXPECT_NE(r.out.find(": 9 vertices, 8 faces\n1 patch (the whole disc), 8 faces; "), std::string::npos)
       << r.out;
+  EXPECT_EQ(r.err, "") << "no face has zero area";
+}
+
+// segment warns of a face of zero area as param does (issue #19: it said
+// nothing), and still writes its files.
+TEST_F(Tool, SegmentWarnsOfAFaceOfZeroArea)
+{
+  const std::string mesh = write("flat.off", "OFF\n5 3 0\n0 0 0\n1 0 0\n2 0 0\n1 1 0\n0 1 0\n3 0 1 3\n3 1 2 3\n3 0 2 1\n");
+  const Tool_run r = run("segment " + mesh + " -o " + out_dir().string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(r.err, "diffuv: warning: " + mesh + ": 1 face has zero area; its (u,v) triangle may be flat\n");
+  EXPECT_TRUE(fs::exists(out_dir() / "flat.patches.txt"));
 }
 
 } // namespace

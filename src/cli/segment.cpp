@@ -62,13 +62,25 @@ void run_segment(const Segment_options& options)
   std::cout << "diffuv segment " << in.path << ": " << count_text(num_vertices(in.mesh), "vertex", "vertices") << ", "
             << count_text(num_faces(in.mesh), "face") << '\n'
             << count_text(seg.number_of_patches(), "patch", "patches") << " ("
-            << (!in.label_source.empty() ? in.label_source : report.automatic ? "automatic" : "the whole disc")
-            << "), " << smallest << " to " << count_text(largest, "face") << " each; "
+            << (!in.label_source.empty() ? in.label_source
+                : report.automatic       ? "automatic"
+                : report.components > 1  ? "each component a whole disc"
+                                         : "the whole disc")
+            << "), "
+            << (seg.number_of_patches() == 1 ? count_text(largest, "face")
+                : smallest == largest        ? count_text(largest, "face") + " each"
+                                             : std::to_string(smallest) + " to " + count_text(largest, "face") + " each")
+            << "; "
             << patching_clause(report, options.patches);
   if(!report.not_discs.empty()) std::cout << "; " << count_text(report.not_discs.size(), "not a disc", "not discs");
   std::cout << "\nwrote";
   for(const auto& p : out.paths()) std::cout << ' ' << p;
   std::cout << '\n';
+  if(in.report.degenerate_faces > 0)  // as param says it: the map cannot give such a face a shape
+    std::cerr << "diffuv: warning: " << in.path << ": "
+              << count_text(in.report.degenerate_faces, "face has zero area; its (u,v) triangle",
+                            "faces have zero area; their (u,v) triangles")
+              << " may be flat\n";
 }
 
 } // namespace
