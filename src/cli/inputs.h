@@ -21,6 +21,7 @@
 #include <CLI/CLI.hpp>
 
 #include <cstdlib>
+#include <iostream>
 #include <filesystem>
 #include <map>
 #include <string>
@@ -168,6 +169,17 @@ inline Input_mesh read_input(const std::string& path, const Patch_cli_options& o
   }
   if(!polygon_labels.empty()) in.face_labels = diffuv::face_labels_of_mesh(polygon_labels, in.report);
   return in;
+}
+
+/// Warns on stderr of the input's faces of zero area (their (u,v) triangles
+/// may be flat); `note` ends the line, e.g. " (column degen)".
+inline void warn_of_zero_area_faces(const Input_mesh& in, const std::string& note = std::string())
+{
+  if(in.report.degenerate_faces == 0) return;
+  std::cerr << "diffuv: warning: " << in.path << ": "
+            << count_text(in.report.degenerate_faces, "face has zero area; its (u,v) triangle",
+                          "faces have zero area; their (u,v) triangles")
+            << " may be flat" << note << "\n";
 }
 
 /// What the summary lines say of `Patching_report::flat_triangles_handed`: nothing for none.

@@ -123,11 +123,7 @@ void print_param_report(const Param_run& run, const Param_options& options)
   print_summary(run, options);
   const double patch_ms = print_table(run, options);
   const Input_mesh& in = run.in;
-  if(in.report.degenerate_faces > 0)
-    std::cerr << "diffuv: warning: " << in.path << ": "
-              << count_text(in.report.degenerate_faces, "face has zero area; its (u,v) triangle",
-                            "faces have zero area; their (u,v) triangles")
-              << " may be flat (column degen)\n";
+  warn_of_zero_area_faces(in, " (column degen)");
   if(run.failed > 0)
     std::cerr << "diffuv: warning: " << run.failed << " of " << count_text(run.result.patches.size(), "patch", "patches")
               << " cannot be parameterized (see the table); their faces have no (u,v)\n";

@@ -76,11 +76,7 @@ void run_segment(const Segment_options& options)
   std::cout << "\nwrote";
   for(const auto& p : out.paths()) std::cout << ' ' << p;
   std::cout << '\n';
-  if(in.report.degenerate_faces > 0)  // as param says it: the map cannot give such a face a shape
-    std::cerr << "diffuv: warning: " << in.path << ": "
-              << count_text(in.report.degenerate_faces, "face has zero area; its (u,v) triangle",
-                            "faces have zero area; their (u,v) triangles")
-              << " may be flat\n";
+  warn_of_zero_area_faces(in);
 }
 
 } // namespace
