@@ -106,4 +106,18 @@ TEST_F(Tool, SegmentWarnsOfAFaceOfZeroArea)
   EXPECT_TRUE(fs::exists(out_dir() / "flat.patches.txt"));
 }
 
+// A disc is one patch whatever --patches says: the tool says the option had no
+// effect; on a closed mesh it has one and nothing is said.
+TEST_F(Tool, PatchesOnADiscSaysItHasNoEffect)
+{
+  const std::string disc = data_path("meshes/nefertiti.off");
+  const Tool_run on_disc = run("segment " + disc + " --patches 5 -o " + (dir_ / "a").string());
+  ASSERT_EQ(on_disc.code, 0) << on_disc.err;
+  EXPECT_EQ(on_disc.err, "diffuv: warning: --patches 5 has no effect on " + disc +
+                             ": the mesh is a disc, and a disc is one patch\n");
+  const Tool_run closed = run("segment " + data_path("meshes/cow.off") + " --patches 5 -o " + (dir_ / "b").string());
+  ASSERT_EQ(closed.code, 0) << closed.err;
+  EXPECT_EQ(closed.err, "");
+}
+
 } // namespace

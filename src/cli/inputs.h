@@ -92,7 +92,7 @@ inline void add_patch_options(CLI::App* cmd, Patch_cli_options& o)
                   "patches each); the cell-complex rules and the refinement then add cells where the surface needs "
                   "them, so below a few hundred they decide the count (cow: 231 patches for N = 1 to 6, 278 by "
                   "default, 287 for 100, 358 for 300); voronoi: N seeds to start from (default 12; more are added until every "
-                  "patch is a disc)")
+                  "patch is a disc). A disc is one patch: on a mesh of discs the option has no effect (a warning says so)")
       ->check(number_in(1, 100000));
   cmd->add_flag("--no-split-caps", o.no_split_caps,
                 "voronoi layout: keep caps (patches with one neighbour all around, like a hand or an ear) whole "
@@ -208,6 +208,12 @@ inline diffuv::Segmentation<Mesh> make_patches(const Input_mesh& in, const Patch
   const diffuv::Status status = diffuv::disc_patches(in.mesh, in.mesh.points(), in.face_labels, seg, options, &report, judge);
   if(!status && o.strict)
     throw diffuv::Input_error(in.labels_path.empty() ? in.path : in.labels_path, 0, status.what());
+  // A disc is one patch whatever the seed count: say so rather than ignore it.
+  if(o.patches > 0 && in.face_labels.empty() && !report.automatic)
+    std::cerr << "diffuv: warning: --patches " << o.patches << " has no effect on " << in.path << ": "
+              << (report.components <= 1 ? "the mesh is a disc, and a disc is one patch"
+                                         : "every component is a disc, and a disc is one patch")
+              << "\n";
   return seg;
 }
 
