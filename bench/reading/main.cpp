@@ -1,0 +1,135 @@
+// diffuv bench: how fast mesh files are read (issue #20's reading targets).
+//
+// Two meshes: mushroom.off of CGAL's data set after three Loop subdivision
+// steps (about 148k vertices, a disc) and a square grid of 1050 x 1050
+// vertices (1.1M). Each is written as ASCII OFF, OBJ and PLY (17 significant
+// digits, as CGAL's writers and diffuv's own write them) and as binary
+// little-endian PLY (double coordinates), into a scratch folder; then each
+// file is read with diffuv::read_triangle_mesh() (file to checked
+// Surface_mesh, what `diffuv param` calls "read") and, as a reference, with
+// CGAL::IO::read_polygon_soup() alone (file to points and polygons, no
+// checks, no mesh). Times are medians of --runs reads after one untimed read.
+//
+// Usage: diffuv_reading_bench [--runs 5] [--meshes mushroom3,grid1m] [-o DIR]
+// Prints a table with MB/s and each target (>= 100 MB/s ASCII, >= 500 MB/s
+// binary PLY) next to its measurement; writes DIR/reading.md.
+#include "common.h"
+
+#include <diffuv/io/read_mesh.h>
+
+#include <CGAL/IO/polygon_soup_io.h>
+#include <CGAL/IO/PLY.h>
+#include <CGAL/Subdivision_method_3/subdivision_methods_3.h>
+#include <CGAL/boost/graph/IO/OFF.h>
+#include <CGAL/boost/graph/IO/OBJ.h>
+#include <CGAL/boost/graph/IO/PLY.h>
+
+#include <CLI/CLI.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+using namespace diffuv_bench;
+namespace fs = std::filesystem;
+
+// The mesh a name stands for.
+Mesh make_mesh(const std::string& name)
+{
+  Mesh m;
+  if(name == "mushroom3") {
+    read_named_mesh("mushroom", m);
+    CGAL::Subdivision_method_3::Loop_subdivision(m, CGAL::parameters::number_of_iterations(3));
+  } else if(name == "grid1m") {
+    const int n = 1050;
+    std::vector<Mesh::Vertex_index> v;
+    v.reserve(static_cast<std::size_t>(n) * n);
+    for(int j = 0; j < n; ++j)
+      for(int i = 0; i < n; ++i)
+        v.push_back(m.add_vertex(Point_3(i / double(n - 1), j / double(n - 1), 0.1 * std::sin(0.01 * i * j))));
+    for(int j = 0; j + 1 < n; ++j)
+      for(int i = 0; i + 1 < n; ++i) {
+        const auto a = v[j * n + i], b = v[j * n + i + 1], c = v[(j + 1) * n + i + 1], d = v[(j + 1) * n + i];
+        m.add_face(a, b, c);
+        m.add_face(a, c, d);
+      }
+  } else {
+    read_named_mesh(name, m);
+  }
+  return m;
+}
+
+struct File { std::string format, path; bool binary = false; };
+
+std::vector<File> write_files(const Mesh& m, const std::string& name, const fs::path& folder)
+{
+  std::vector<File> files;
+  const auto precision = CGAL::parameters::stream_precision(17);
+  auto path = [&](const std::string& suffix) { return (folder / (name + suffix)).string(); };
+  files.push_back({"OFF", path(".off")});
+  CGAL::IO::write_OFF(files.back().path, m, precision);
+  files.push_back({"OBJ", path(".obj")});
+  CGAL::IO::write_OBJ(files.back().path, m, precision);
+  files.push_back({"PLY ascii", path(".ascii.ply")});
+  CGAL::IO::write_PLY(files.back().path, m, precision.use_binary_mode(false));
+  files.push_back({"PLY binary", path(".binary.ply"), true});
+  CGAL::IO::write_PLY(files.back().path, m, CGAL::parameters::use_binary_mode(true));
+  return files;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  CLI::App app{"diffuv reading bench: MB/s of read_triangle_mesh() per format"};
+  std::vector<std::string> meshes = {"mushroom3", "grid1m"};
+  int runs = 5;
+  std::string output = "bench-out/reading";
+  add_meshes_option(app, meshes, "Meshes (mushroom3: mushroom after 3 Loop steps; grid1m: 1050 x 1050 grid)");
+  add_runs_option(app, runs, "Reads per file; the median is reported");
+  add_output_option(app, output);
+  CLI11_PARSE(app, argc, argv);
+
+  return exit_code_of([&] {
+    fs::create_directories(output);
+    const fs::path scratch = fs::temp_directory_path() / ("diffuv_reading_bench_" + std::to_string(::getpid()));
+    fs::create_directories(scratch);
+    std::ostringstream table;
+    table << "| mesh | format | MB | vertices | read_triangle_mesh ms | MB/s | target | met | CGAL soup only ms | MB/s |\n"
+          << "|---|---|---:|---:|---:|---:|---:|---|---:|---:|\n";
+    bool all_met = true;
+    for(const std::string& name : meshes) {
+      std::cerr << name << ": making the mesh\n";
+      const Mesh m = make_mesh(name);
+      for(const File& f : write_files(m, name, scratch)) {
+        const double mb = static_cast<double>(fs::file_size(f.path)) / 1e6;
+        Mesh read;
+        std::size_t vertices = 0;
+        const double ms = median_time(runs, [&] { vertices = diffuv::read_triangle_mesh(f.path, read).vertices; });
+        std::vector<Point_3> points;
+        std::vector<std::vector<std::size_t>> polygons;
+        const double soup_ms = median_time(runs, [&] {
+          points.clear();
+          polygons.clear();
+          CGAL::IO::read_polygon_soup(f.path, points, polygons, CGAL::parameters::verbose(false));
+        });
+        const double rate = mb / (ms / 1000), target = f.binary ? 500 : 100;
+        all_met = all_met && rate >= target;
+        table << "| " << name << " | " << f.format << " | " << format("%.1f", mb) << " | " << vertices << " | "
+              << format("%.0f", ms) << " | " << format("%.0f", rate) << " | " << format("%.0f", target) << " | "
+              << (rate >= target ? "yes" : "no") << " | " << format("%.0f", soup_ms) << " | "
+              << format("%.0f", mb / (soup_ms / 1000)) << " |\n";
+        std::cerr << "  " << f.format << ": " << format("%.0f", ms) << " ms\n";
+      }
+    }
+    fs::remove_all(scratch);
+    std::cout << table.str();
+    std::ofstream(fs::path(output) / "reading.md") << table.str();
+    return all_met ? 0 : 1;
+  });
+}
