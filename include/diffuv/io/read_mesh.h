@@ -28,7 +28,6 @@
 #include <diffuv/io/internal/triangulate_polygons.h>
 
 #include <CGAL/IO/OBJ.h>
-#include <CGAL/IO/OFF.h>
 #include <CGAL/IO/PLY.h>
 #include <CGAL/IO/STL.h>
 #include <CGAL/Polygon_mesh_processing/shape_predicates.h>
@@ -176,21 +175,28 @@ Mesh_read_report read_triangle_mesh(const std::string& path, TriangleMesh& mesh)
   if(file_size == 0)
     throw Input_error(path, 0, "the file is empty");
 
+  // OFF is read in one pass of diffuv's own scanner, which gives the soup
+  // and the lines of its elements; the other formats are read with CGAL's
+  // readers after their scanners checked what those readers take on trust.
+  internal::Polygon_soup soup;
+  internal::Text_mesh_scan off_scan;
+  if(format == Mesh_format::off) {
+    std::string text;
+    if(!internal::read_file_bytes(path, text))
+      throw Input_error(path, 0, "cannot open file");
+    off_scan = internal::scan_off(text, false, &soup);
+    if(!off_scan.error.empty())
+      throw Input_error(path, off_scan.error_line, off_scan.error);
+  }
+
   // The lines of elements, for messages: only the text formats have them.
   internal::Line_locator locate([&]() -> internal::Text_mesh_scan {
     if(format == Mesh_format::off)
-      return internal::scan_off(path, file_size, false);
+      return std::move(off_scan);
     if(format == Mesh_format::obj)
       return internal::scan_obj(path);
     return internal::Text_mesh_scan();
   });
-  if(format == Mesh_format::off) {
-    // The whole file, not only the header: CGAL's OFF reader trusts what the
-    // scan checks (see scan_off()). The scan is kept for the lines of later errors.
-    const internal::Text_mesh_scan& scan = locate.scan();
-    if(!scan.error.empty())
-      throw Input_error(path, scan.error_line, scan.error);
-  }
   if(format == Mesh_format::ply) {
     const internal::Text_mesh_scan checked = internal::scan_ply(path, file_size);
     if(!checked.error.empty())
@@ -204,7 +210,12 @@ Mesh_read_report read_triangle_mesh(const std::string& path, TriangleMesh& mesh)
   try {
     const auto np = CGAL::parameters::verbose(false);
     switch(format) {
-      case Mesh_format::off: read = CGAL::IO::read_OFF(path, points, polygons, np); break;
+      case Mesh_format::off:
+        read = soup.complete;
+        points.reserve(soup.points.size());
+        for(const auto& p : soup.points) points.emplace_back(p[0], p[1], p[2]);
+        polygons = std::move(soup.polygons);
+        break;
       case Mesh_format::obj: read = CGAL::IO::read_OBJ(path, points, polygons, np); break;
       case Mesh_format::ply: read = CGAL::IO::read_PLY(path, points, polygons, np); break;
       case Mesh_format::stl: read = CGAL::IO::read_STL(path, points, polygons, np); break;

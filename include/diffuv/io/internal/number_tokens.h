@@ -5,17 +5,42 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <sstream>
 #include <string>
+#include <string_view>
 #include <system_error>
 #include <vector>
 
 namespace diffuv {
 namespace internal {
 
+/// White space as `std::isspace` sees it in the C locale, without the locale.
+inline bool is_blank(char c)
+{
+  return c == ' ' || c == '\n' || c == '\t' || c == '\r' || c == '\v' || c == '\f';
+}
+
+/// The bytes of the file at `path`, read whole; false if it cannot be read.
+/// Readers walk this text once instead of a stream (issue #20: streams read
+/// about 10 MB/s).
+inline bool read_file_bytes(const std::string& path, std::string& bytes)
+{
+  std::FILE* file = std::fopen(path.c_str(), "rb");
+  if(!file)
+    return false;
+  bytes.clear();
+  char buffer[1 << 16];
+  for(std::size_t n; (n = std::fread(buffer, 1, sizeof buffer, file)) > 0;)
+    bytes.append(buffer, n);
+  const bool ok = !std::ferror(file);
+  std::fclose(file);
+  return ok;
+}
+
 /// True if the whole of `token` is a decimal integer that fits `value`.
-inline bool parse_count(const std::string& token, long long& value)
+inline bool parse_count(std::string_view token, long long& value)
 {
   const char* first = token.data();
   const char* last = first + token.size();
@@ -25,11 +50,17 @@ inline bool parse_count(const std::string& token, long long& value)
 
 /// True if the whole of `token` is a number for `std::strtod` (which takes
 /// "nan", "inf" and hexadecimal too).
-inline bool parse_number(const std::string& token, double& value)
+inline bool parse_number(std::string_view token, double& value)
 {
+  // A plain decimal number the quick way (both round correctly); anything
+  // else ("+1", "0x1p3", "inf", "1e999") as strtod reads it.
+  const auto [stop, ec] = std::from_chars(token.data(), token.data() + token.size(), value);
+  if(ec == std::errc() && stop == token.data() + token.size() && !token.empty() && token.front() != '+')
+    return true;
+  const std::string text(token);
   char* end = nullptr;
-  value = std::strtod(token.c_str(), &end);
-  return !token.empty() && end == token.c_str() + token.size();
+  value = std::strtod(text.c_str(), &end);
+  return !text.empty() && end == text.c_str() + text.size();
 }
 
 /// `line` up to a `#` comment.

@@ -12,16 +12,17 @@
 
 #include <CGAL/IO/io.h>
 
+#include <array>
 #include <cctype>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
-#include <fstream>
-#include <istream>
+#include <cstring>
 #include <limits>
 #include <sstream>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace diffuv {
@@ -60,10 +61,11 @@ inline Off_keyword off_keyword(const std::string& keyword)
   return k;
 }
 
-/// An input stream that counts lines.
+/// A file's text, read whole, walked with the line counted: one read of the
+/// file and views into it instead of a stream read character by character.
 class Line_counting_reader {
 public:
-  explicit Line_counting_reader(std::istream& in) : in_(in) {}
+  explicit Line_counting_reader(std::string_view text) : text_(text) {}
 
   std::size_t line() const { return line_; }
 
@@ -71,16 +73,17 @@ public:
   /// the file (the last one may have no end of line).
   std::size_t lines_begun() const { return at_line_start_ ? line_ - 1 : line_; }
 
-  int peek() { return in_.peek(); }
+  int peek() const { return at_ < text_.size() ? static_cast<unsigned char>(text_[at_]) : std::char_traits<char>::eof(); }
 
   int get()
   {
-    const int c = in_.get();
+    if(at_ == text_.size())
+      return std::char_traits<char>::eof();
+    const char c = text_[at_++];
     if(c == '\n')
       ++line_;
-    if(c != std::char_traits<char>::eof())
-      at_line_start_ = c == '\n';
-    return c;
+    at_line_start_ = c == '\n';
+    return static_cast<unsigned char>(c);
   }
 
   /// Skips white space and `#` comments, as CGAL's `skip_comment_OFF`.
@@ -93,7 +96,7 @@ public:
         return false;
       if(c == '#')
         rest_of_line();
-      else if(std::isspace(c))
+      else if(is_blank(static_cast<char>(c)))
         get();
       else
         return true;
@@ -101,30 +104,36 @@ public:
   }
 
   /// The characters up to white space or `#`.
-  std::string token()
+  std::string_view token()
   {
-    std::string t;
-    for(int c = peek(); c != std::char_traits<char>::eof() && c != '#' && !std::isspace(c); c = peek())
-      t += static_cast<char>(get());
-    return t;
+    const std::size_t first = at_;
+    while(at_ < text_.size() && text_[at_] != '#' && !is_blank(text_[at_]))
+      ++at_;
+    if(at_ > first)
+      at_line_start_ = false;
+    return text_.substr(first, at_ - first);
   }
 
   /// The characters up to the end of the line, which is consumed.
-  std::string rest_of_line()
+  std::string_view rest_of_line()
   {
-    std::string s;
-    if(std::getline(in_, s) && !in_.eof()) {
+    const std::size_t first = at_;
+    const std::size_t end = text_.find('\n', at_);
+    if(end != std::string_view::npos) {
+      at_ = end + 1;
       ++line_; // the end of line was read
       at_line_start_ = true;
-    } else if(!s.empty()) {
-      at_line_start_ = false;
+      return text_.substr(first, end - first);
     }
-    return s;
+    at_ = text_.size();
+    if(at_ > first)
+      at_line_start_ = false;
+    return text_.substr(first);
   }
 
   /// The next line that holds more than white space and comments, from its
   /// first character on, and its number. Returns false at the end of the input.
-  bool next_line(std::string& text, std::size_t& line)
+  bool next_line(std::string_view& text, std::size_t& line)
   {
     if(!skip_space_and_comments())
       return false;
@@ -133,8 +142,12 @@ public:
     return true;
   }
 
+  /// The bytes not read yet (binary data after a header).
+  std::string_view rest() const { return text_.substr(at_); }
+
 private:
-  std::istream& in_;
+  std::string_view text_;
+  std::size_t at_ = 0;
   std::size_t line_ = 1;
   bool at_line_start_ = true;
 };
@@ -142,9 +155,9 @@ private:
 /// The numbers of an OFF line as CGAL's `File_scanner_OFF` reads them: up to
 /// a `#` comment, with `CGAL::IO::iformat()` (whose syntax differs from
 /// `operator>>`: "1e999" is infinite, "1-2" is one number).
-inline std::vector<double> cgal_off_numbers(const std::string& line)
+inline std::vector<double> cgal_off_numbers(std::string_view line)
 {
-  std::istringstream in(before_comment(line));
+  std::istringstream in(before_comment(std::string(line)));
   std::vector<double> numbers;
   double d;
   while(in >> CGAL::IO::iformat(d))
@@ -154,24 +167,26 @@ inline std::vector<double> cgal_off_numbers(const std::string& line)
 
 /// The numbers of an OFF line made of plain decimal numbers only (up to a `#`
 /// comment), on which `leading_numbers()` and `cgal_off_numbers()` agree,
-/// without their string streams; false if the line has anything else.
-inline bool plain_numbers(const std::string& line, std::vector<double>& numbers)
+/// without their string streams (`std::from_chars`, correctly rounded like
+/// them); false if the line has anything else, a sign `+` or a number that
+/// is not finite, which are left to them.
+inline bool plain_numbers(std::string_view line, std::vector<double>& numbers)
 {
   numbers.clear();
-  const char* p = line.c_str();
+  const char* p = line.data();
   const char* const end = p + line.size();
   for(;;) {
-    while(p < end && std::isspace(static_cast<unsigned char>(*p)))
+    while(p < end && is_blank(*p))
       ++p;
     if(p == end || *p == '#')
       return true;
     const char* const start = p;
-    for(; p < end && !std::isspace(static_cast<unsigned char>(*p)); ++p)
-      if(!std::isdigit(static_cast<unsigned char>(*p)) && *p != '.' && *p != '-' && *p != '+' && *p != 'e' && *p != 'E')
+    for(; p < end && !is_blank(*p); ++p)
+      if(!((*p >= '0' && *p <= '9') || *p == '.' || *p == '-' || *p == 'e' || *p == 'E'))
         return false;
-    char* stop = nullptr;
-    const double d = std::strtod(start, &stop);
-    if(stop != p || !std::isfinite(d))
+    double d = 0;
+    const auto [stop, ec] = std::from_chars(start, p, d);
+    if(ec != std::errc() || stop != p || !std::isfinite(d))
       return false;
     numbers.push_back(d);
   }
@@ -183,27 +198,39 @@ inline bool edge_count_fits(long long edges)
   return edges >= std::numeric_limits<int>::min() / 2 && edges <= std::numeric_limits<int>::max() / 2;
 }
 
-/// Scans an OFF file like CGAL's `File_scanner_OFF`: header, then one vertex
-/// per line, then one face per line. With `header_only`, stops after the
-/// header, whose counts are checked against the size of the file: CGAL
-/// resizes its arrays to the announced counts before reading them, so a
-/// corrupt header would otherwise allocate gigabytes.
-/// Binary OFF has no lines: its data is only walked for what CGAL trusts.
-inline Text_mesh_scan scan_off(const std::string& path, std::uintmax_t file_size, bool header_only)
+/// The points and polygons of a mesh file, as read.
+struct Polygon_soup {
+  std::vector<std::array<double, 3>> points;
+  std::vector<std::vector<std::size_t>> polygons;
+  bool complete = false; ///< false: the file ended or broke off before all were read
+};
+
+/// Reads and checks an OFF file like CGAL's `File_scanner_OFF`: header, then
+/// one vertex per line, then one face per line, giving the lines of the
+/// elements and the first problem. With `soup`, also gives the points and
+/// polygons as CGAL's `read_OFF()` reads them (homogeneous coordinates
+/// divided through), so that this one pass is the OFF reader. With
+/// `header_only`, stops after the header, whose counts are checked against
+/// the size of the file: CGAL resizes its arrays to the announced counts
+/// before reading them, so a corrupt header would otherwise allocate gigabytes.
+/// Binary OFF has no lines: its data is read as CGAL reads it (no colours).
+inline Text_mesh_scan scan_off(std::string_view text, bool header_only, Polygon_soup* soup = nullptr)
 {
   Text_mesh_scan scan;
-  std::ifstream file(path, std::ios::binary);
-  Line_counting_reader in(file);
+  const std::uintmax_t file_size = text.size();
+  Line_counting_reader in(text);
   auto fail = [&](std::size_t line, const std::string& what) {
     scan.error_line = line;
     scan.error = "not a valid OFF file (" + what + ")";
     return scan;
   };
+  if(soup)
+    *soup = Polygon_soup();
 
   if(!in.skip_space_and_comments())
     return fail(0, "the file has no OFF header");
   const std::size_t header_line = in.line();
-  const std::string keyword = in.token();
+  const std::string keyword(in.token());
   const Off_keyword announced = off_keyword(keyword);
   if(!announced.in_order)
     return fail(header_line, "the file does not start with an OFF header");
@@ -213,25 +240,30 @@ inline Text_mesh_scan scan_off(const std::string& path, std::uintmax_t file_size
   long long nv = 0, nf = 0, ne = 0;
   in.skip_space_and_comments();
   std::size_t counts_line = in.line();
-  std::string token = in.token();
+  std::string_view token = in.token();
   if(token == "BINARY") {
     // Three big-endian 32-bit counts after the end of the line (after the
     // dimension for nOFF, which CGAL's reader does not use: it reads three
     // coordinates per vertex whatever the dimension).
     in.rest_of_line();
-    unsigned char bytes[12];
-    if(n_dimensional && !file.read(reinterpret_cast<char*>(bytes), 4))
-      return fail(counts_line, "cannot read the dimension");
-    if(!file.read(reinterpret_cast<char*>(bytes), 12))
-      return fail(counts_line, "cannot read the numbers of vertices, faces and edges");
-    auto read32 = [&](int i) {
-      const std::uint32_t u = (std::uint32_t(bytes[4 * i]) << 24) | (std::uint32_t(bytes[4 * i + 1]) << 16) |
-                              (std::uint32_t(bytes[4 * i + 2]) << 8) | std::uint32_t(bytes[4 * i + 3]);
-      return static_cast<long long>(static_cast<std::int32_t>(u));
+    std::string_view data = in.rest();
+    auto read32 = [&](std::uint32_t& u) {
+      if(data.size() < 4)
+        return false;
+      const unsigned char* b = reinterpret_cast<const unsigned char*>(data.data());
+      u = (std::uint32_t(b[0]) << 24) | (std::uint32_t(b[1]) << 16) | (std::uint32_t(b[2]) << 8) | std::uint32_t(b[3]);
+      data.remove_prefix(4);
+      return true;
     };
-    nv = read32(0);
-    nf = read32(1);
-    ne = read32(2);
+    auto signed32 = [](std::uint32_t u) { return static_cast<long long>(static_cast<std::int32_t>(u)); };
+    std::uint32_t counts[3];
+    if(n_dimensional && !read32(counts[0]))
+      return fail(counts_line, "cannot read the dimension");
+    if(!read32(counts[0]) || !read32(counts[1]) || !read32(counts[2]))
+      return fail(counts_line, "cannot read the numbers of vertices, faces and edges");
+    nv = signed32(counts[0]);
+    nf = signed32(counts[1]);
+    ne = signed32(counts[2]);
     if(nv < 0 || nf < 0)
       return fail(counts_line, "negative number of vertices or faces");
     if(!edge_count_fits(ne))
@@ -243,29 +275,57 @@ inline Text_mesh_scan scan_off(const std::string& path, std::uintmax_t file_size
                                    " bytes of the file can hold");
     if(header_only)
       return scan;
-    // Binary data has no lines to find; walk it as CGAL reads it for the
-    // face sizes, which CGAL allocates before reading the indices.
+    // Binary data has no lines to find; read it as CGAL reads it, checking
+    // the face sizes, which CGAL allocates before reading the indices.
     const std::size_t h = homogeneous ? 1 : 0;
-    const std::streamsize floats = static_cast<std::streamsize>(3 + h + (normals ? 3 + h : 0) + (texture ? 2 + h : 0));
-    auto next32 = [&](std::int32_t& value) {
-      if(!file.read(reinterpret_cast<char*>(bytes), 4))
-        return false;
-      value = static_cast<std::int32_t>(read32(0));
-      return true;
-    };
+    const std::size_t floats = 3 + h + (normals ? 3 + h : 0) + (texture ? 2 + h : 0);
     // CGAL's read_OFF() reads no colour in binary files (nor their counts).
-    if(!file.ignore(4 * floats * static_cast<std::streamsize>(nv)) || file.gcount() != 4 * floats * nv)
-      return scan; // CGAL stops in the vertices too
-    std::int32_t count = 0;
-    for(long long j = 0; j < nf; ++j) {
-      if(!next32(count)) // CGAL would allocate the face with the unread (uninitialised) size
-        return fail(0, "the file ends before face " + std::to_string(j) + " of " + std::to_string(nf));
-      if(count < 0 || static_cast<std::uintmax_t>(count) * 4 > file_size)
-        return fail(0, "face " + std::to_string(j) + " has " + std::to_string(count) + " vertices, " +
-                           (count < 0 ? "a negative number" : "more than the file can hold"));
-      if(!file.ignore(4 * static_cast<std::streamsize>(count)))
-        return scan;
+    if(data.size() / 4 / floats < static_cast<std::uintmax_t>(nv))
+      return scan; // CGAL stops in the vertices too: the soup is not complete
+    if(soup) {
+      soup->points.resize(static_cast<std::size_t>(nv));
+      for(auto& point : soup->points) {
+        float xyzw[4] = {0, 0, 0, 1};
+        for(std::size_t c = 0; c < 3 + h; ++c) {
+          std::uint32_t u = 0;
+          read32(u);
+          std::memcpy(&xyzw[c], &u, 4);
+        }
+        data.remove_prefix(4 * (floats - 3 - h));
+        for(int c = 0; c < 3; ++c) point[c] = double(xyzw[c]) / double(xyzw[3]);
+      }
+    } else {
+      data.remove_prefix(4 * floats * static_cast<std::size_t>(nv));
     }
+    std::uint32_t count = 0;
+    bool truncated = false;
+    for(long long j = 0; j < nf; ++j) {
+      if(!read32(count)) // CGAL would allocate the face with the unread (uninitialised) size
+        return fail(0, "the file ends before face " + std::to_string(j) + " of " + std::to_string(nf));
+      const long long size = signed32(count);
+      if(size < 0 || static_cast<std::uintmax_t>(size) * 4 > file_size)
+        return fail(0, "face " + std::to_string(j) + " has " + std::to_string(size) + " vertices, " +
+                           (size < 0 ? "a negative number" : "more than the file can hold"));
+      if(data.size() / 4 < static_cast<std::uintmax_t>(size)) {
+        // CGAL reads to the end; the next face, if any, finds nothing.
+        data = std::string_view();
+        truncated = true;
+        continue;
+      }
+      if(soup) {
+        std::vector<std::size_t> polygon(static_cast<std::size_t>(size));
+        for(auto& index : polygon) { // as CGAL converts it: a negative index becomes a huge one
+          std::uint32_t u = 0;
+          read32(u);
+          index = static_cast<std::size_t>(signed32(u));
+        }
+        soup->polygons.push_back(std::move(polygon));
+      } else {
+        data.remove_prefix(4 * static_cast<std::size_t>(size));
+      }
+    }
+    if(soup)
+      soup->complete = !truncated;
     return scan;
   }
 
@@ -344,17 +404,23 @@ inline Text_mesh_scan scan_off(const std::string& path, std::uintmax_t file_size
   std::vector<double> numbers, entries;
   // The numbers of `text` read as the messages below describe them
   // (operator>>), and as CGAL reads them.
-  auto read_numbers = [&](const std::string& text) {
+  auto read_numbers = [&](std::string_view text) {
     if(plain_numbers(text, numbers)) {
       entries = numbers;
       stop.clear();
     } else {
-      numbers = leading_numbers(text, stop);
+      numbers = leading_numbers(std::string(text), stop);
       entries = cgal_off_numbers(text);
     }
   };
+  if(soup) {
+    soup->points.reserve(static_cast<std::size_t>(nv));
+    soup->polygons.reserve(static_cast<std::size_t>(nf));
+  }
+  scan.vertex_line.reserve(static_cast<std::size_t>(nv));
+  scan.face_line.reserve(static_cast<std::size_t>(nf));
   for(long long i = 0; i < nv; ++i) {
-    std::string text;
+    std::string_view text;
     std::size_t line = 0;
     if(!in.next_line(text, line))
       return fail(0, "the file ends before vertex " + std::to_string(i) + " of " + std::to_string(nv));
@@ -386,10 +452,14 @@ inline Text_mesh_scan scan_off(const std::string& path, std::uintmax_t file_size
       if(!problem.empty())
         return fail(line, "vertex " + std::to_string(i) + " " + problem);
     }
+    if(soup) {
+      const double w = homogeneous ? entries[3] : 1.0;
+      soup->points.push_back({entries[0] / w, entries[1] / w, entries[2] / w});
+    }
   }
 
   for(long long j = 0; j < nf; ++j) {
-    std::string text;
+    std::string_view text;
     std::size_t line = 0;
     if(!in.next_line(text, line))
       return fail(0, "the file ends before face " + std::to_string(j) + " of " + std::to_string(nf));
@@ -425,7 +495,15 @@ inline Text_mesh_scan scan_off(const std::string& path, std::uintmax_t file_size
       if(!problem.empty())
         return fail(line, "face " + std::to_string(j) + " " + problem);
     }
+    if(soup) {
+      std::vector<std::size_t> polygon(cgal_size);
+      for(std::size_t c = 0; c < cgal_size; ++c)
+        polygon[c] = static_cast<std::size_t>(entries[c + 1]);
+      soup->polygons.push_back(std::move(polygon));
+    }
   }
+  if(soup)
+    soup->complete = true;
   return scan;
 }
 

@@ -210,20 +210,28 @@ inline Paint_file read_ply_paint(const std::string& path, const std::string& pro
 inline Paint_file read_off_paint(const std::string& path)
 {
   Paint_file file;
-  std::ifstream stream(path, std::ios::binary);
-  Line_counting_reader in(stream);
+  std::string bytes;
+  if(!read_file_bytes(path, bytes))
+    throw Input_error(path, 0, "cannot open file");
+  Line_counting_reader in(bytes);
   std::size_t line = 0;
-  std::vector<std::string> tokens;
+  std::vector<std::string_view> tokens;
   auto next_record = [&]() { // the words of the next line that has some
-    std::string text;
+    std::string_view text;
     tokens.clear();
     if(!in.next_line(text, line)) {
       line = in.lines_begun(); // the last line of the file
       return false;
     }
-    std::istringstream words(before_comment(text));
-    for(std::string w; words >> w;)
-      tokens.push_back(w);
+    text = text.substr(0, text.find('#'));
+    for(std::size_t at = 0;;) {
+      while(at < text.size() && is_blank(text[at])) ++at;
+      if(at == text.size()) break;
+      const std::size_t end = std::min(text.size(), static_cast<std::size_t>(
+          std::find_if(text.begin() + static_cast<std::ptrdiff_t>(at), text.end(), is_blank) - text.begin()));
+      tokens.push_back(text.substr(at, end - at));
+      at = end;
+    }
     return true;
   };
   auto fail = [&](std::size_t at, const std::string& what) {
@@ -232,7 +240,7 @@ inline Paint_file read_off_paint(const std::string& path)
 
   if(!next_record())
     throw fail(0, "the file has no OFF header");
-  const Off_keyword announced = off_keyword(tokens[0]);
+  const Off_keyword announced = off_keyword(std::string(tokens[0]));
   if(!announced.ends_with_off)
     throw fail(line, "the file does not start with an OFF header");
   if(announced.n_dimensional)
@@ -241,7 +249,7 @@ inline Paint_file read_off_paint(const std::string& path)
   const bool has_vertex_colors = announced.colors;
   const std::size_t skip = 3 + h + (announced.normals ? 3 + h : 0);
   const std::size_t texture = announced.texture ? 2 + h : 0;
-  std::vector<std::string> counts(tokens.begin() + 1, tokens.end());
+  std::vector<std::string_view> counts(tokens.begin() + 1, tokens.end());
   while(counts.size() < 3 && !(counts.size() == 1 && counts[0] == "BINARY") && next_record())
     counts.insert(counts.end(), tokens.begin(), tokens.end());
   if(!counts.empty() && counts[0] == "BINARY")
