@@ -244,4 +244,40 @@ TEST_F(Tool, TheTableStaysAlignedForLargeValues)
   }
 }
 
+// A batch user's options (issue #20): --outputs writes only what it lists,
+// --no-measure skips the measures (the table shows '-', the files are the
+// same), --quiet prints nothing; values they cannot honour are refused.
+TEST_F(Tool, OutputsNoMeasureAndQuietWriteOnlyWhatIsAsked)
+{
+  const std::string cow = data_path("meshes/cow.off");
+  const Tool_run full = run("param " + cow + " -o " + (dir_ / "full").string());
+  ASSERT_EQ(full.code, 0) << full.err;
+  const Tool_run lean = run("param " + cow + " --outputs uv,patches --no-measure -q -o " + (dir_ / "lean").string());
+  ASSERT_EQ(lean.code, 0) << lean.err;
+  EXPECT_EQ(lean.out, "");
+  std::vector<std::string> written;
+  for(const auto& e : fs::directory_iterator(dir_ / "lean")) written.push_back(e.path().filename().string());
+  std::sort(written.begin(), written.end());
+  EXPECT_EQ(written, (std::vector<std::string>{"cow.patches.txt", "cow.uv.csv"}));
+  EXPECT_TRUE(slurp(dir_ / "lean" / "cow.uv.csv") == slurp(dir_ / "full" / "cow.uv.csv"));
+  EXPECT_TRUE(slurp(dir_ / "lean" / "cow.patches.txt") == slurp(dir_ / "full" / "cow.patches.txt"));
+
+  // Without measures the table is there, its distortion columns empty.
+  const Tool_run unmeasured = run("param " + cow + " --no-measure --outputs picture -o " + (dir_ / "pic").string());
+  ASSERT_EQ(unmeasured.code, 0) << unmeasured.err;
+  EXPECT_NE(unmeasured.out.find("\ntotal "), std::string::npos) << unmeasured.out;
+  EXPECT_EQ(unmeasured.out.find(", measure "), std::string::npos) << unmeasured.out;
+  EXPECT_NE(full.out.find(", measure "), std::string::npos) << full.out;
+  EXPECT_TRUE(fs::exists(dir_ / "pic" / "cow.png"));
+  EXPECT_FALSE(fs::exists(dir_ / "pic" / "cow.obj"));
+
+  for(const std::string& bad : {std::string("--outputs obj,foo"), std::string("--outputs obj,obj"),
+                                std::string("--outputs ,"), std::string("--no-measure --color area")}) {
+    const Tool_run r = run("param " + cow + " " + bad + " -o " + (dir_ / "bad").string());
+    EXPECT_EQ(r.code, 2) << bad << ": " << r.err;
+    EXPECT_NE(r.err.find(bad.substr(0, bad.find(' '))), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir_ / "bad")) << bad;
+  }
+}
+
 } // namespace

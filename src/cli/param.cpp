@@ -25,9 +25,34 @@
 namespace diffuv_cli {
 namespace {
 
+/// What --outputs names: obj (with its .mtl and checker texture), uv, patches, picture.
+struct Outputs {
+  bool obj = false, uv = false, patches = false, picture = false;
+};
+
+Outputs parse_outputs(const Param_options& options)
+{
+  if(options.render_only) return Outputs{false, false, false, true};
+  Outputs o;
+  for(const std::string& name : split_list(options.outputs)) {
+    bool* flag = name == "obj" ? &o.obj : name == "uv" ? &o.uv : name == "patches" ? &o.patches
+               : name == "picture" ? &o.picture : nullptr;
+    if(!flag)
+      throw CLI::ValidationError("--outputs", "unknown output '" + name + "' (obj, uv, patches or picture)");
+    if(*flag) throw CLI::ValidationError("--outputs", "'" + name + "' is listed twice");
+    *flag = true;
+  }
+  if(!o.obj && !o.uv && !o.patches && !o.picture && !options.svg)
+    throw CLI::ValidationError("--outputs", "no output given");
+  return o;
+}
+
 void run_param(const Param_options& options)
 {
   picture_size(options.size); // a bad --size is a usage error before any work
+  const Outputs outputs = parse_outputs(options);
+  if(options.no_measure && options.color != "patches")
+    throw CLI::ValidationError("--no-measure", "--color " + options.color + " draws the measures; measure, or colour the patches");
   check_patch_options(options.patches);
   if(!options.corners.empty() && (!options.patches.labels.empty()))
     throw CLI::ValidationError("--corners", "applies to a disc mesh without --labels");
@@ -83,10 +108,12 @@ void run_param(const Param_options& options)
   // Everything is computed before anything is written: all files or none.
   const std::vector<std::string> inputs = {in.path, options.corners, options.patches.labels};
   stages.restart();
-  const std::vector<Chart_measure> measures = measure_charts(in, result, options.unit_squares); // for the picture and the table
-  stages.done("measure");
+  // For the picture and the table; --no-measure leaves them empty.
+  const std::vector<Chart_measure> measures = options.no_measure ? std::vector<Chart_measure>(result.patches.size())
+                                                                  : measure_charts(in, result, options.unit_squares);
+  if(!options.no_measure) stages.done("measure");
   diffuv::Output_folder out(options.output, inputs);
-  if(!options.render_only) {
+  if(outputs.obj) {
     // A textured OBJ: any viewer shows the map as a checkerboard on the mesh.
     const std::string texture = output_name(in.path, ".checker.png");
     if(options.unit_squares)
@@ -97,16 +124,21 @@ void run_param(const Param_options& options)
                         output_name(in.path, ".mtl"), "diffuv_checker");
     diffuv::write_mtl(out.open(output_name(in.path, ".mtl")), "diffuv_checker", texture);
     diffuv::write_png(out.open(texture), 512, 512, diffuv::checker_texture(512, 8));
-    if(options.svg) write_uv_layouts(out, in, result);
-    diffuv::write_uv_table(out.open(output_name(in.path, ".uv.csv")), atlas);
-    write_polygon_patches(out.open(output_name(in.path, ".patches.txt")), in, result.seg);
   }
-  diffuv::write_png(out.open(output_name(in.path, ".png")), picture(in, result, measures, options),
-                    output_name(in.path, ".png"));
+  if(options.svg) write_uv_layouts(out, in, result);
+  if(outputs.uv) diffuv::write_uv_table(out.open(output_name(in.path, ".uv.csv")), atlas);
+  if(outputs.patches) write_polygon_patches(out.open(output_name(in.path, ".patches.txt")), in, result.seg);
+  if(outputs.picture)
+    diffuv::write_png(out.open(output_name(in.path, ".png")), picture(in, result, measures, options),
+                      output_name(in.path, ".png"));
   out.commit();
   stages.done("write");
 
-  print_param_report(Param_run{in, result, measures, total_ms, failed, stages, out.paths()}, options);
+  if(!options.quiet)
+    print_param_report(Param_run{in, result, measures, total_ms, failed, stages, out.paths(), !options.no_measure},
+                       options);
+  else
+    print_param_warnings(Param_run{in, result, measures, total_ms, failed, stages, out.paths(), !options.no_measure});
 }
 
 // The options `param` and `render` share: what is parameterized, and how it is drawn.
@@ -163,6 +195,10 @@ void add_common_options(CLI::App* cmd, Param_options& o)
   cmd->add_option("--isolines", o.isolines, "u and v isolines every 1/N in the picture (0: none)")
       ->check(number_in(0, 1000))
       ->capture_default_str();
+  cmd->add_flag("--no-measure", o.no_measure,
+                "Do not measure the distortion of the charts (the table's distortion columns show '-'): faster for "
+                "a batch that does not need them");
+  cmd->add_flag("-q,--quiet", o.quiet, "Print nothing but warnings and errors");
   cmd->add_option("--color,--colour", o.color,
                   "Face colours of the picture: patches, angle (sigma_max/sigma_min) or area distortion, as a heat "
                   "map from 1 to 10 (log scale; flipped faces magenta)")
@@ -187,10 +223,14 @@ void add_param_command(CLI::App& app)
   cmd->add_flag("--unit-squares", options->unit_squares,
                 "Write every chart on the unit square (the canonical (u,v)) instead of on a rectangle of its own "
                 "aspect (the aspect with the least stretch for the chart's map); the table then measures the squares");
+  cmd->add_option("--outputs", options->outputs,
+                  "What to write, a comma-separated list of: obj (the OBJ with its .mtl and checker texture), uv (the "
+                  "uv table), patches (the label file), picture (the PNG)")
+      ->capture_default_str();
   cmd->add_option("--runs", options->runs, "Run the parameterization N times and report the median time")
       ->check(number_in(1, 1000))
       ->capture_default_str();
-  cmd->footer(std::string("Writes OUTPUT/<mesh>.obj (v in input order, one vt per distinct (vertex, uv)), "
+  cmd->footer(std::string("Writes, unless --outputs says otherwise, OUTPUT/<mesh>.obj (v in input order, one vt per distinct (vertex, uv)), "
               "OUTPUT/<mesh>.uv.csv (vertex,patch,u,v), OUTPUT/<mesh>.mtl and <mesh>.checker.png (the OBJ's material "
               "and texture), OUTPUT/<mesh>.png (the mesh with its patches and u, v isolines) and "
               "OUTPUT/<mesh>.patches.txt (the patch of each face of the mesh file, one per "

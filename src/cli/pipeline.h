@@ -43,6 +43,9 @@ struct Param_options {
   bool render_only = false; // diffuv render: the picture only
   std::size_t threads = 0;   // 0: every core (with oneTBB)
   Patch_cli_options patches;
+  std::string outputs = "obj,uv,patches,picture"; // param: what is written (--outputs)
+  bool no_measure = false;   // skip the distortion measures (the table shows '-')
+  bool quiet = false;        // print nothing but warnings and errors
 };
 
 /// One parameterization of the whole mesh: its patches and its atlas.

@@ -45,15 +45,18 @@ Table patch_table()
                 {"L2", 8, Table::right},        {"Linf", 9, Table::right},      {"injective", 9, Table::right}});
 }
 
+// `d` is empty without measures (--no-measure): its columns show '-'.
 void add_row(Table& table, const std::string& patch, const std::string& name, std::size_t vertices, std::size_t faces,
              const std::string& corners, double ms, std::size_t moved, std::size_t flat,
-             const diffuv::Distortion_summary& d)
+             const diffuv::Distortion_summary& d, bool measured)
 {
+  const auto m = [measured](const std::string& text) { return measured ? text : std::string("-"); };
   table.add_row({patch, name, std::to_string(vertices), std::to_string(faces), corners, formatted("%.2f", ms),
-                 std::to_string(moved), std::to_string(d.flipped), std::to_string(d.degenerate), std::to_string(flat),
-                 std::to_string(d.overlapping_pairs), formatted("%.4f", d.angle_mean), formatted("%.4g", d.angle_max),
-                 formatted("%.4f", d.area_mean), formatted("%.4g", d.area_max), formatted("%.4g", d.stretch_l2),
-                 formatted("%.4g", d.stretch_linf), d.injective() ? "yes" : "no"});
+                 std::to_string(moved), m(std::to_string(d.flipped)), m(std::to_string(d.degenerate)),
+                 std::to_string(flat), m(std::to_string(d.overlapping_pairs)), m(formatted("%.4f", d.angle_mean)),
+                 m(formatted("%.4g", d.angle_max)), m(formatted("%.4f", d.area_mean)), m(formatted("%.4g", d.area_max)),
+                 m(formatted("%.4g", d.stretch_l2)), m(formatted("%.4g", d.stretch_linf)),
+                 m(d.injective() ? "yes" : "no")});
 }
 
 // The first lines: the mesh, then the corners or the patches.
@@ -104,29 +107,37 @@ double print_table(const Param_run& run, const Param_options& options)
     const std::size_t patch_moved = r.repair.moved_vertices + r.repair.moved_border_vertices;
     add_row(table, std::to_string(p), names[p], chart.vertices.size(), chart.faces.size(),
             corner_rule(r.side_report, !options.corners.empty()), r.milliseconds, patch_moved,
-            r.repair.flat_triangles, d);
+            r.repair.flat_triangles, d, run.measured);
     moved += patch_moved;
     flat += r.repair.flat_triangles;
     vertex_entries += chart.vertices.size();
     total = diffuv::combined(total, d);
     patch_ms += r.milliseconds;
   }
-  add_row(table, "total", "", vertex_entries, total.faces, "", run.total_ms, moved, flat, total);
+  std::size_t faces = 0;
+  for(const auto& r : result.patches)
+    if(r.status) faces += result.atlas->chart(r.chart).faces.size();
+  add_row(table, "total", "", vertex_entries, run.measured ? total.faces : faces, "", run.total_ms, moved, flat, total,
+          run.measured);
   std::cout << table.text();
   return patch_ms;
 }
 
 } // namespace
 
+void print_param_warnings(const Param_run& run)
+{
+  warn_of_zero_area_faces(run.in, " (column degen)");
+  if(run.failed > 0)
+    std::cerr << "diffuv: warning: " << run.failed << " of " << count_text(run.result.patches.size(), "patch", "patches")
+              << " cannot be parameterized (see the table); their faces have no (u,v)\n";
+}
+
 void print_param_report(const Param_run& run, const Param_options& options)
 {
   print_summary(run, options);
   const double patch_ms = print_table(run, options);
-  const Input_mesh& in = run.in;
-  warn_of_zero_area_faces(in, " (column degen)");
-  if(run.failed > 0)
-    std::cerr << "diffuv: warning: " << run.failed << " of " << count_text(run.result.patches.size(), "patch", "patches")
-              << " cannot be parameterized (see the table); their faces have no (u,v)\n";
+  print_param_warnings(run);
   std::cout << "time: " << Stage_clock::duration(run.total_ms) << " to make and map the patches (median of "
             << count_text(static_cast<std::size_t>(options.runs), "run") << "); the patches' own times (column time_ms) add up to "
             << Stage_clock::duration(patch_ms) << (options.threads == 1 ? "" : " over all threads") << '\n';

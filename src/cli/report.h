@@ -20,10 +20,14 @@ struct Param_run {
   std::size_t failed = 0;                      ///< patches without a chart
   const Stage_clock& stages;
   const std::vector<std::string>& written;     ///< the files written
+  bool measured = true;                        ///< false: --no-measure, `measures` are empty
 };
 
 /// Prints the summary and the table on stdout, the warnings on stderr.
 void print_param_report(const Param_run& run, const Param_options& options);
+
+/// The warnings of the report alone (--quiet): zero-area faces, patches not mapped.
+void print_param_warnings(const Param_run& run);
 
 } // namespace diffuv_cli
 
