@@ -20,6 +20,7 @@
 #define DIFFUV_IO_READ_MESH_H
 
 #include <diffuv/core/error.h>
+#include <diffuv/io/internal/file_bytes.h>
 #include <diffuv/io/internal/mesh_scan.h>
 #include <diffuv/io/internal/obj_scanner.h>
 #include <diffuv/io/internal/off_scanner.h>
@@ -181,10 +182,10 @@ Mesh_read_report read_triangle_mesh(const std::string& path, TriangleMesh& mesh)
   internal::Polygon_soup soup;
   internal::Text_mesh_scan off_scan;
   if(format == Mesh_format::off) {
-    std::string text;
-    if(!internal::read_file_bytes(path, text))
+    internal::File_bytes bytes;
+    if(!bytes.open(path))
       throw Input_error(path, 0, "cannot open file");
-    off_scan = internal::scan_off(text, false, &soup);
+    off_scan = internal::scan_off(bytes.view(), false, &soup);
     if(!off_scan.error.empty())
       throw Input_error(path, off_scan.error_line, off_scan.error);
   }

@@ -5,7 +5,6 @@
 
 #include <charconv>
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
 #include <sstream>
 #include <string>
@@ -20,23 +19,6 @@ namespace internal {
 inline bool is_blank(char c)
 {
   return c == ' ' || c == '\n' || c == '\t' || c == '\r' || c == '\v' || c == '\f';
-}
-
-/// The bytes of the file at `path`, read whole; false if it cannot be read.
-/// Readers walk this text once instead of a stream (issue #20: streams read
-/// about 10 MB/s).
-inline bool read_file_bytes(const std::string& path, std::string& bytes)
-{
-  std::FILE* file = std::fopen(path.c_str(), "rb");
-  if(!file)
-    return false;
-  bytes.clear();
-  char buffer[1 << 16];
-  for(std::size_t n; (n = std::fread(buffer, 1, sizeof buffer, file)) > 0;)
-    bytes.append(buffer, n);
-  const bool ok = !std::ferror(file);
-  std::fclose(file);
-  return ok;
 }
 
 /// True if the whole of `token` is a decimal integer that fits `value`.

@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <map>
 #include <sstream>
 #include <string>
@@ -105,20 +106,26 @@ inline std::string describe_non_manifold(const std::vector<std::vector<std::size
 /// Around a vertex v each face (.., b, v, a, ..) gives the link a -> b. An
 /// oriented edge v -> a used twice is a repeated link start at v; otherwise
 /// the links form paths and cycles, one per fan.
-inline bool is_manifold_oriented_soup(const std::vector<std::vector<std::size_t>>& polygons, std::size_t nb_points)
+template <class Index>
+bool is_manifold_oriented_soup_as(const std::vector<std::vector<std::size_t>>& polygons, std::size_t nb_points)
 {
-  // The links of each vertex, stored vertex by vertex (counting sort).
+  // The links of each vertex, stored vertex by vertex (counting sort), with
+  // indices as small as the mesh allows: the pages of fresh memory are what
+  // this costs on a large mesh.
   std::vector<std::size_t> first(nb_points + 1, 0);
   for(const auto& p : polygons)
     for(std::size_t v : p) ++first[v + 1];
   for(std::size_t v = 0; v < nb_points; ++v) first[v + 1] += first[v];
-  std::vector<std::pair<std::size_t, std::size_t>> links(first[nb_points]);
-  std::vector<std::size_t> fill(first.begin(), first.end() - 1);
-  for(const auto& p : polygons)
-    for(std::size_t c = 0, n = p.size(); c < n; ++c)
-      links[fill[p[c]]++] = {p[c + 1 < n ? c + 1 : 0], p[c > 0 ? c - 1 : n - 1]};
+  using Link = std::pair<Index, Index>;
+  std::vector<Link> links(first[nb_points]);
+  {
+    std::vector<std::size_t> fill(first.begin(), first.end() - 1);
+    for(const auto& p : polygons)
+      for(std::size_t c = 0, n = p.size(); c < n; ++c)
+        links[fill[p[c]]++] = {static_cast<Index>(p[c + 1 < n ? c + 1 : 0]), static_cast<Index>(p[c > 0 ? c - 1 : n - 1])};
+  }
 
-  std::vector<std::size_t> ends;
+  std::vector<Index> ends;
   for(std::size_t v = 0; v < nb_points; ++v) {
     const auto begin = links.begin() + static_cast<std::ptrdiff_t>(first[v]);
     const auto end = links.begin() + static_cast<std::ptrdiff_t>(first[v + 1]);
@@ -132,15 +139,16 @@ inline bool is_manifold_oriented_soup(const std::vector<std::vector<std::size_t>
     std::sort(ends.begin(), ends.end());
     // A path starts at a link start that no link ends at; a fan without such
     // a start is a cycle. Walk the fan from there: one fan covers all links.
-    std::size_t start = begin->first, paths = 0;
+    Index start = begin->first;
+    std::size_t paths = 0;
     for(auto it = begin; it != end; ++it)
       if(!std::binary_search(ends.begin(), ends.end(), it->first)) {
         start = it->first;
         if(++paths > 1) return false;
       }
     std::size_t walked = 0;
-    for(std::size_t at = start; walked < degree; ++walked) {
-      const auto it = std::lower_bound(begin, end, std::make_pair(at, std::size_t(0)));
+    for(Index at = start; walked < degree; ++walked) {
+      const auto it = std::lower_bound(begin, end, Link(at, Index(0)));
       if(it == end || it->first != at) break;
       at = it->second;
       if(paths == 0 && at == start) { ++walked; break; } // the cycle closed
@@ -148,6 +156,13 @@ inline bool is_manifold_oriented_soup(const std::vector<std::vector<std::size_t>
     if(walked != degree) return false;
   }
   return true;
+}
+
+inline bool is_manifold_oriented_soup(const std::vector<std::vector<std::size_t>>& polygons, std::size_t nb_points)
+{
+  if(nb_points < (std::size_t(1) << 32))
+    return is_manifold_oriented_soup_as<std::uint32_t>(polygons, nb_points);
+  return is_manifold_oriented_soup_as<std::size_t>(polygons, nb_points);
 }
 
 /// Checks the soup of `path`, in file order so that the first problem is

@@ -7,6 +7,7 @@
 #include <diffuv/core/color.h>
 #include <diffuv/core/error.h>
 #include <diffuv/internal/message_text.h>
+#include <diffuv/io/internal/file_bytes.h>
 #include <diffuv/io/internal/number_tokens.h>
 #include <diffuv/io/internal/off_scanner.h>
 #include <diffuv/io/internal/ply_scanner.h>
@@ -210,10 +211,10 @@ inline Paint_file read_ply_paint(const std::string& path, const std::string& pro
 inline Paint_file read_off_paint(const std::string& path)
 {
   Paint_file file;
-  std::string bytes;
-  if(!read_file_bytes(path, bytes))
+  File_bytes bytes;
+  if(!bytes.open(path))
     throw Input_error(path, 0, "cannot open file");
-  Line_counting_reader in(bytes);
+  Line_counting_reader in(bytes.view());
   std::size_t line = 0;
   std::vector<std::string_view> tokens;
   auto next_record = [&]() { // the words of the next line that has some
