@@ -390,6 +390,103 @@ TEST(QuadLayout, FallbackCornersChosenByTheirMapsServeThemBetter)
   EXPECT_LT(total_after.stretch_l2, total_before.stretch_l2);
 }
 
+// The quick estimate of a choice of corners is its raw map's L2 stretch: with
+// graph distances (where a side's distance is exactly the least of its arcs')
+// it equals the L2 that measure_distortion() gives the map that
+// Diffusion_coordinates makes from the same four sides, on the rectangle
+// that stretch_optimal_rectangle() finds.
+TEST(QuadLayout, CornerEstimateIsTheRawMapMeasured)
+{
+  const Mesh& disc = cgal_mesh("mushroom.off");  // a disc: one loop
+  std::vector<Mesh::Face_index> faces(disc.faces().begin(), disc.faces().end());
+  Seg one;
+  one.face_patch.assign(num_faces(disc), 0);
+  one.patch_faces = {faces};
+  one.patch_label = {0};
+  one.patch_part = {0};
+  const auto loop = diffuv::patch_loops(disc, disc.points(), one, 0).front().vertices;
+  const std::size_t m = loop.size();
+  ASSERT_GT(m, 20u);
+  // A pool of 6 loop vertices, evenly spaced: 15 choices.
+  std::vector<std::size_t> pool;
+  for(std::size_t k = 0; k < 6; ++k) pool.push_back(k * m / 6);
+  std::vector<std::array<std::size_t, 4>> choices;
+  for(std::size_t a = 0; a < 6; ++a)
+    for(std::size_t b = a + 1; b < 6; ++b)
+      for(std::size_t c = b + 1; c < 6; ++c)
+        for(std::size_t d = c + 1; d < 6; ++d) choices.push_back({a, b, c, d});
+  using Patch = CGAL::Face_filtered_graph<Mesh>;
+  const Patch patch(disc, faces);
+  auto raw_l2 = [&](const std::array<std::size_t, 4>& choice) {
+    diffuv::Four_sides<Mesh::Vertex_index> sides;
+    for(std::size_t s = 0; s < 4; ++s) {
+      sides.corners[s] = loop[pool[choice[s]]];
+      auto& side = sides[diffuv::all_sides[s]];
+      for(std::size_t i = pool[choice[s]];; i = (i + 1) % m) {
+        side.push_back(loop[i]);
+        if(i == pool[choice[(s + 1) % 4]]) break;
+      }
+    }
+    std::vector<Kernel::Point_2> uv(num_vertices(patch));
+    auto uv_map = boost::make_iterator_property_map(uv.begin(), get(boost::vertex_index, patch));
+    EXPECT_TRUE(diffuv::diffusion_coordinates<diffuv::Graph_distance_tag>(patch, sides, diffuv::edge_length_map(disc, disc.points()), uv_map).ok());
+    const auto size = diffuv::stretch_optimal_rectangle(disc, disc.points(), faces, uv_map);
+    for(auto& q : uv) q = Kernel::Point_2(q.x() * size[0], q.y() * size[1]);
+    return diffuv::measure_distortion(disc, disc.points(), faces, uv_map);
+  };
+  const auto graph = diffuv::internal::estimate_corner_choices(disc, disc.points(), faces, loop, pool, choices);
+  ASSERT_EQ(graph.size(), choices.size());
+  std::size_t compared = 0;
+  for(std::size_t c = 0; c < choices.size(); ++c) {
+    const diffuv::Distortion_summary by_graph = raw_l2(choices[c]);
+    if(by_graph.degenerate == 0) {  // the estimate leaves out the same flat triangles
+      EXPECT_NEAR(graph[c], by_graph.stretch_l2, 1e-9 * by_graph.stretch_l2) << c;
+      ++compared;
+    }
+  }
+  EXPECT_GT(compared, choices.size() / 2);
+}
+
+// On a large patch only the best estimated choices are mapped. Mapping them
+// all gives the exhaustive search's corners; mapping three still gives
+// corners only where the map serves the patch better than the rule's.
+TEST(QuadLayout, EstimatedCornerChoicesKeepTheSearchHonest)
+{
+  const Mesh& cow = cgal_mesh("cow.off");
+  const Seg rule = automatic_layout(cow);
+  diffuv::Fallback_corner_options exhaustive;
+  exhaustive.estimate_from_faces = std::numeric_limits<std::size_t>::max();
+  Seg all = rule;
+  const std::size_t set_all = diffuv::choose_fallback_corners(cow, cow.points(), all, exhaustive);
+  ASSERT_GT(set_all, 5u);
+  diffuv::Fallback_corner_options every_estimate;
+  every_estimate.estimate_from_faces = 0;
+  every_estimate.mapped_candidates = 35;  // the pool of 7 gives 35 choices
+  Seg ranked = rule;
+  EXPECT_EQ(diffuv::choose_fallback_corners(cow, cow.points(), ranked, every_estimate), set_all);
+  EXPECT_EQ(ranked.patch_corners, all.patch_corners);
+
+  diffuv::Fallback_corner_options three = every_estimate;
+  three.mapped_candidates = 3;
+  Seg few = rule;
+  const std::size_t set_few = diffuv::choose_fallback_corners(cow, cow.points(), few, three);
+  EXPECT_GT(set_few, 0u);
+  EXPECT_LE(set_few, set_all);
+  diffuv::Uv_atlas<Mesh> before(cow), after(cow);
+  const auto by_rule = diffuv::parameterize_patches(cow, cow.points(), rule, before);
+  const auto by_few = diffuv::parameterize_patches(cow, cow.points(), few, after);
+  for(std::size_t p = 0; p < rule.number_of_patches(); ++p) {
+    if(rule.corners(p) || !few.corners(p)) continue;
+    ASSERT_TRUE(by_rule[p].status.ok() && by_few[p].status.ok()) << p;
+    const double l2_rule = diffuv::measure_distortion(cow, cow.points(), before.chart(by_rule[p].chart).faces,
+                                                      before.chart_texture_map(by_rule[p].chart)).stretch_l2;
+    const auto chosen = diffuv::measure_distortion(cow, cow.points(), after.chart(by_few[p].chart).faces,
+                                                   after.chart_texture_map(by_few[p].chart));
+    EXPECT_TRUE(chosen.injective()) << p;
+    EXPECT_LE(chosen.stretch_l2, 0.98 * l2_rule) << p;
+  }
+}
+
 TEST(QuadLayout, EveryChartOfTheDefaultAtlasIsOneToOne)
 {
   // The default pipeline on three meshes whose layouts had charts with a flat

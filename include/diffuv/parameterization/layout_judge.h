@@ -12,14 +12,21 @@
 #include <diffuv/atlas/Uv_atlas.h>
 #include <diffuv/internal/index_list_hash.h>
 #include <diffuv/graph/distance_tags.h>
+#include <diffuv/graph/edge_length_map.h>
+#include <diffuv/graph/heap_tags.h>
+#include <diffuv/parameterization/chart_rectangle.h>
+#include <diffuv/parameterization/diffusion_coordinates.h>
 #include <diffuv/metrics/distortion.h>
 #include <diffuv/parameterization/parameterize_patches.h>
 #include <diffuv/patches/segmentation.h>
 
 #include <CGAL/Kernel/global_functions.h>
 
+#include <CGAL/boost/graph/Face_filtered_graph.h>
+
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <limits>
 #include <map>
@@ -37,7 +44,118 @@ struct Fallback_corner_options {
   std::size_t pool = 7;       ///< corners chosen among this many loop vertices (junctions, then the sharpest)
   double min_gain = 0.02;     ///< a choice replaces the rule's only if its L2 is lower by this fraction
   std::size_t threads = 0;    ///< threads mapping the patches (0: all, with oneTBB)
+  /// A patch with at least this many faces has its candidates ranked by a
+  /// quick estimate first (`internal::estimate_corner_choices()`), and only the
+  /// best `mapped_candidates` are mapped; smaller patches map every candidate.
+  std::size_t estimate_from_faces = 2000;
+  std::size_t mapped_candidates = 2;  ///< candidates mapped per large patch, best estimates first
 };
+
+namespace internal {
+
+// A quick estimate of the L2 stretch that each choice of four corners among
+// `pool` (increasing positions in `loop`, a patch's boundary loop) gives the
+// raw map of the patch `faces`. The pool cuts the loop into arcs, and a
+// choice's sides are runs of whole arcs, so one distance run per arc serves
+// all choices: a side's distance is the least of its arcs'. That is exact for
+// graph distances, the default here. Fast marching is not additive that way
+// (the least of two arcs' fronts is up to 2 % farther than the front of both,
+// in a wedge from their common end), and the raw map's L2, dominated by its
+// thinnest triangles, then moves by up to 10x; graph distances rank the
+// choices as well (cow, bull, elephant: the same L2 after mapping the best 2
+// or 3, measured) and cost less. No repair, no corner moved off an ear; the
+// map is measured on its least-stretch rectangle. Costs |pool| distance runs
+// and, per choice, a pass over the vertices and one over the faces, instead
+// of four runs, the repair and the chart.
+// \tparam DistanceTag the distances diffused (graph/distance_tags.h)
+// \returns one L2 per choice (infinite where the map cannot be measured)
+template <class DistanceTag = Graph_distance_tag, class TriangleMesh, class VertexPointMap, class FaceRange>
+std::vector<double> estimate_corner_choices(const TriangleMesh& tm, VertexPointMap vpm, const FaceRange& faces,
+                                            const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& loop,
+                                            const std::vector<std::size_t>& pool,
+                                            const std::vector<std::array<std::size_t, 4>>& choices)
+{
+  using Patch = CGAL::Face_filtered_graph<TriangleMesh>;
+  using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
+  const Patch patch(tm, faces);
+  auto pindex = get(boost::vertex_index, patch);
+  const std::size_t nv = num_vertices(patch), k = pool.size(), m = loop.size();
+  // Arc a: from loop[pool[a]] to loop[pool[a+1]], both ends included.
+  std::vector<std::vector<double>> arc_distance(k, std::vector<double>(nv));
+  Distance_engine<Patch, DistanceTag, Fibonacci_heap_tag> engine(patch);
+  const auto lengths = edge_length_map(tm, vpm);
+  for(std::size_t a = 0; a < k; ++a) {
+    std::vector<vertex_descriptor> arc;
+    for(std::size_t i = pool[a];; i = (i + 1) % m) {
+      arc.push_back(loop[i]);
+      if(i == pool[(a + 1) % k]) break;
+    }
+    if(!engine.run(arc, lengths, boost::make_iterator_property_map(arc_distance[a].begin(), pindex)))
+      return std::vector<double>(choices.size(), std::numeric_limits<double>::infinity());
+  }
+  // Per face: its vertices and 3D edges. On the rectangle (w, h) of least
+  // stretch, w/h = sqrt(P/Q) with P, Q the area-weighted sums of |dx/du|^2 and
+  // |dx/dv|^2, and the L2 stretch, normalised as measure_distortion() does
+  // (times sqrt of the uv area over the 3D area), is sqrt(sqrt(P Q) U) / A
+  // (U: uv area on the unit square, A: 3D area); see chart_rectangle.h.
+  struct Face_data {
+    std::array<std::size_t, 3> v;
+    std::array<double, 3> dp1, dp2;
+    double area;
+  };
+  std::vector<Face_data> face_data;
+  double area_3d = 0;
+  for(auto f : faces) {
+    const auto h = halfedge(f, tm);
+    const vertex_descriptor a = source(h, tm), b = target(h, tm), c = target(next(h, tm), tm);
+    const auto pa = get(vpm, a), pb = get(vpm, b), pc = get(vpm, c);
+    Face_data fd;
+    fd.v = {static_cast<std::size_t>(get(pindex, a)), static_cast<std::size_t>(get(pindex, b)), static_cast<std::size_t>(get(pindex, c))};
+    fd.dp1 = {CGAL::to_double(pb.x() - pa.x()), CGAL::to_double(pb.y() - pa.y()), CGAL::to_double(pb.z() - pa.z())};
+    fd.dp2 = {CGAL::to_double(pc.x() - pa.x()), CGAL::to_double(pc.y() - pa.y()), CGAL::to_double(pc.z() - pa.z())};
+    const std::array<double, 3> n = {fd.dp1[1] * fd.dp2[2] - fd.dp1[2] * fd.dp2[1], fd.dp1[2] * fd.dp2[0] - fd.dp1[0] * fd.dp2[2],
+                                     fd.dp1[0] * fd.dp2[1] - fd.dp1[1] * fd.dp2[0]};
+    fd.area = 0.5 * std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    area_3d += fd.area;
+    face_data.push_back(fd);
+  }
+  std::vector<double> estimate(choices.size(), std::numeric_limits<double>::infinity());
+  std::array<std::vector<double>, 4> side;
+  for(auto& d : side) d.resize(nv);
+  std::vector<double> u(nv), v(nv);
+  for(std::size_t c = 0; c < choices.size(); ++c) {
+    // Side s runs from corner s to corner s+1: v1, u2, v2, u1 (core/four_sides.h).
+    for(std::size_t s = 0; s < 4; ++s) {
+      std::fill(side[s].begin(), side[s].end(), std::numeric_limits<double>::infinity());
+      for(std::size_t a = choices[c][s]; a != choices[c][(s + 1) % 4]; a = (a + 1) % k)
+        for(std::size_t i = 0; i < nv; ++i) side[s][i] = std::min(side[s][i], arc_distance[a][i]);
+    }
+    for(std::size_t i = 0; i < nv; ++i) {
+      u[i] = diffusion_ratio(side[3][i], side[1][i]);
+      v[i] = diffusion_ratio(side[0][i], side[2][i]);
+    }
+    double uv_area = 0;
+    for(const Face_data& fd : face_data)
+      uv_area += 0.5 * std::abs((u[fd.v[1]] - u[fd.v[0]]) * (v[fd.v[2]] - v[fd.v[0]]) - (u[fd.v[2]] - u[fd.v[0]]) * (v[fd.v[1]] - v[fd.v[0]]));
+    double p = 0, q = 0;
+    for(const Face_data& fd : face_data) {
+      const double du1 = u[fd.v[1]] - u[fd.v[0]], dv1 = v[fd.v[1]] - v[fd.v[0]];
+      const double du2 = u[fd.v[2]] - u[fd.v[0]], dv2 = v[fd.v[2]] - v[fd.v[0]];
+      const double det = du1 * dv2 - du2 * dv1;
+      if(!(0.5 * std::abs(det) > 1e-14 * uv_area)) continue;  // flat in uv: left out, as measure_distortion() does
+      for(int x = 0; x < 3; ++x) {
+        const double xu = (fd.dp1[x] * dv2 - fd.dp2[x] * dv1) / det, xv = (fd.dp2[x] * du1 - fd.dp1[x] * du2) / det;
+        p += fd.area * xu * xu;
+        q += fd.area * xv * xv;
+      }
+    }
+    const double l2 = std::sqrt(std::sqrt(p * q) * uv_area) / area_3d;
+    if(std::isfinite(l2) && p > 0 && q > 0) estimate[c] = l2;
+  }
+  return estimate;
+}
+
+} // namespace internal
 
 /// Chooses the four corners of each patch that has none (the layout's
 /// fallback patches, whose sides `region_sides()` would make by merging or
@@ -50,8 +168,11 @@ struct Fallback_corner_options {
 /// go into `seg.patch_corners`; such a patch's sides no longer follow its runs
 /// of neighbours (a fallback patch is not conforming anyway), so this is for
 /// automatic atlases, not for correspondence, whose corners must be found again
-/// on another mesh. Every candidate is mapped; the choice does not depend on
-/// the number of threads.
+/// on another mesh. On a patch of fewer than `estimate_from_faces` faces every
+/// candidate is mapped; on a larger one (a whole disc component), the
+/// candidates are first ranked by a quick estimate of their raw maps
+/// (`internal::estimate_corner_choices()`) and the best `mapped_candidates`
+/// are mapped. The choice does not depend on the number of threads.
 /// \returns the number of patches whose corners were set
 template <class TriangleMesh, class VertexPointMap>
 std::size_t choose_fallback_corners(const TriangleMesh& tm, VertexPointMap vpm, Segmentation<TriangleMesh>& seg,
@@ -119,13 +240,26 @@ std::size_t choose_fallback_corners(const TriangleMesh& tm, VertexPointMap vpm, 
     });
     order.resize(std::min(order.size(), options.pool));
     std::sort(order.begin(), order.end());  // loop order: counter-clockwise
-    std::vector<Corners> choices;
+    std::vector<std::array<std::size_t, 4>> in_pool;  // positions in `order`
     const std::size_t k = order.size();
     for(std::size_t a = 0; a < k; ++a)
       for(std::size_t b = a + 1; b < k; ++b)
         for(std::size_t c = b + 1; c < k; ++c)
-          for(std::size_t d = c + 1; d < k; ++d)
-            choices.push_back({loop.vertices[order[a]], loop.vertices[order[b]], loop.vertices[order[c]], loop.vertices[order[d]]});
+          for(std::size_t d = c + 1; d < k; ++d) in_pool.push_back({a, b, c, d});
+    if(seg.patch_faces[fallback[i]].size() >= options.estimate_from_faces && in_pool.size() > options.mapped_candidates) {
+      // A large patch: map only the choices estimated best (ties: the first listed).
+      const std::vector<double> estimate =
+          internal::estimate_corner_choices(tm, vpm, seg.patch_faces[fallback[i]], loop.vertices, order, in_pool);
+        std::vector<std::size_t> rank(in_pool.size());
+      std::iota(rank.begin(), rank.end(), 0);
+      std::stable_sort(rank.begin(), rank.end(), [&](std::size_t a, std::size_t b) { return estimate[a] < estimate[b]; });
+      std::vector<std::array<std::size_t, 4>> kept;
+      for(std::size_t r = 0; r < options.mapped_candidates; ++r) kept.push_back(in_pool[rank[r]]);
+      in_pool = std::move(kept);
+    }
+    std::vector<Corners> choices;
+    for(const auto& q : in_pool)
+      choices.push_back({loop.vertices[order[q[0]]], loop.vertices[order[q[1]]], loop.vertices[order[q[2]]], loop.vertices[order[q[3]]]});
     bad.push_back(fallback[i]);
     best.push_back(by_rule[i]);
     by_rule_score.push_back(by_rule[i]);
