@@ -15,7 +15,6 @@ math(EXPR diffuv_sweep_timeout "${DIFFUV_SWEEP_LIMIT} + 60")
 # the reason measured (doc/layout.md); the sweep checks every other mesh for it.
 set(diffuv_sweep_not_injective
   b9_mesh.off              # the layout leaves a non-disc: Voronoi patches instead, whose strips fold
-  blobby_3cc.off           # a whole disc component with more ears than corners, no neighbour to take one
   boeing.off               # CAD strips: fallback patches with more ears than corners
   cheese.off               # the same, around its holes
   couplingdown.off         # CAD strips: two fallback patches of 11 and 13 runs with no interior path between junctions, one flat triangle each that no hand-off takes (one-to-one before the cuts between junctions)

@@ -106,16 +106,32 @@ TEST_F(Tool, SegmentWarnsOfAFaceOfZeroArea)
   EXPECT_TRUE(fs::exists(out_dir() / "flat.patches.txt"));
 }
 
-// A disc is one patch whatever --patches says: the tool says the option had no
-// effect; on a closed mesh it has one and nothing is said.
-TEST_F(Tool, PatchesOnADiscSaysItHasNoEffect)
+// A disc whose map as one patch is good stays whole; --patches lays it out
+// (issue #18), except with the Voronoi layout, where the tool says the option
+// had no effect. A disc that one square would not serve (lion-head: its map
+// folds, the repair moved every vertex) is laid out by default. On a closed
+// mesh nothing is said.
+TEST_F(Tool, PatchesOnADiscLayItOut)
 {
   const std::string disc = data_path("meshes/nefertiti.off");
-  const Tool_run on_disc = run("segment " + disc + " --patches 5 -o " + (dir_ / "a").string());
-  ASSERT_EQ(on_disc.code, 0) << on_disc.err;
-  EXPECT_EQ(on_disc.err, "diffuv: warning: --patches 5 has no effect on " + disc +
+  const Tool_run whole = run("segment " + disc + " -o " + (dir_ / "a").string());
+  ASSERT_EQ(whole.code, 0) << whole.err;
+  EXPECT_NE(whole.out.find("\n1 patch (the whole disc), 562 faces; each disc component is one patch\n"), std::string::npos)
+      << whole.out;
+  const Tool_run asked = run("segment " + disc + " --patches 5 -o " + (dir_ / "b").string());
+  ASSERT_EQ(asked.code, 0) << asked.err;
+  EXPECT_EQ(asked.err, "");
+  EXPECT_EQ(asked.out.find("1 patch (the whole disc)"), std::string::npos) << asked.out;
+  EXPECT_NE(asked.out.find(", 1 disc laid out (--patches given)\n"), std::string::npos) << asked.out;
+  const Tool_run voronoi = run("segment " + disc + " --patches 5 --layout voronoi -o " + (dir_ / "c").string());
+  ASSERT_EQ(voronoi.code, 0) << voronoi.err;
+  EXPECT_EQ(voronoi.err, "diffuv: warning: --patches 5 has no effect on " + disc +
                              ": the mesh is a disc, and a disc is one patch\n");
-  const Tool_run closed = run("segment " + data_path("meshes/cow.off") + " --patches 5 -o " + (dir_ / "b").string());
+  const Tool_run relief = run("segment " + data_path("meshes/lion-head.off") + " -o " + (dir_ / "d").string());
+  ASSERT_EQ(relief.code, 0) << relief.err;
+  EXPECT_NE(relief.out.find(", 1 disc laid out (as one patch its map would fold or stretch)\n"), std::string::npos)
+      << relief.out;
+  const Tool_run closed = run("segment " + data_path("meshes/cow.off") + " --patches 5 -o " + (dir_ / "e").string());
   ASSERT_EQ(closed.code, 0) << closed.err;
   EXPECT_EQ(closed.err, "");
 }

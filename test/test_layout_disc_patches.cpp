@@ -6,6 +6,8 @@
 #include <diffuv/graph/patch_graph.h>
 #include <diffuv/layout/disc_patches.h>
 #include <diffuv/layout/voronoi_discs.h>
+#include <diffuv/metrics/distortion.h>
+#include <diffuv/parameterization/layout_judge.h>
 #include <diffuv/parameterization/parameterize_disc.h>
 #include <diffuv/parameterization/parameterize_patches.h>
 #include <diffuv/patches/flat_triangles.h>
@@ -242,6 +244,82 @@ TEST(DiscPatches, EachDiscComponentStaysWhole)
   EXPECT_EQ(seg.number_of_patches(), 2u);
 }
 
+
+// A disc component stays whole when its map as one patch is good, and is laid
+// out when one square would not serve it (issue #18): lion-head, a relief with
+// a ragged border, folds as one patch and the repair re-solves nearly every
+// vertex; nefertiti maps well whole. The judge decides (Disc_components::judged,
+// the default); without a judge that maps, every disc stays whole; `whole` and
+// `laid_out` force either. The expectation is measured independently: the
+// laid-out atlas of lion-head has a lower L2 and moves fewer vertices than the
+// whole one, through the default pipeline.
+TEST(DiscPatches, ADiscIsLaidOutWhenOneSquareWouldNotServeIt)
+{
+  using diffuv_test::Mesh;
+  using Judge = diffuv::Raw_map_judge<Mesh, decltype(std::declval<const Mesh&>().points())>;
+  auto patches_of = [](const Mesh& m, diffuv::Disc_components discs, bool with_judge, diffuv::Patching_report& report) {
+    diffuv::Patching_options options;
+    options.discs = discs;
+    diffuv::Segmentation<Mesh> seg;
+    const diffuv::Status status = with_judge ? diffuv::disc_patches(m, m.points(), {}, seg, options, &report, Judge(m, m.points()))
+                                             : diffuv::disc_patches(m, m.points(), {}, seg, options, &report);
+    EXPECT_TRUE(status.ok()) << status.what();
+    return seg;
+  };
+  struct Quality {
+    double l2 = 0;
+    std::size_t moved = 0;
+    bool injective = true;
+  };
+  auto atlas_quality = [](const Mesh& m, const diffuv::Segmentation<Mesh>& seg) {
+    diffuv::Uv_atlas<Mesh> atlas(m);
+    const auto results = diffuv::parameterize_patches(m, m.points(), seg, atlas);
+    diffuv::Distortion_summary total;
+    Quality q;
+    for(const auto& r : results) {
+      EXPECT_TRUE(r.status.ok()) << r.status.what();
+      if(!r.status) continue;
+      q.moved += r.repair.moved_vertices + r.repair.moved_border_vertices;
+      total = diffuv::combined(total, diffuv::measure_distortion(m, m.points(), atlas.chart(r.chart).faces, atlas.chart_texture_map(r.chart)));
+    }
+    q.l2 = total.stretch_l2;
+    q.injective = total.injective();
+    return q;
+  };
+
+  const Mesh& relief = diffuv_test::cgal_mesh("lion-head.off");
+  diffuv::Patching_report report;
+  const auto judged = patches_of(relief, diffuv::Disc_components::judged, true, report);
+  EXPECT_GT(judged.number_of_patches(), 20u);
+  EXPECT_EQ(report.discs_laid_out, 1u);
+  EXPECT_EQ(report.whole_components, 0u);
+  EXPECT_TRUE(report.automatic);
+  const auto without_judge = patches_of(relief, diffuv::Disc_components::judged, false, report);
+  EXPECT_EQ(without_judge.number_of_patches(), 1u);
+  EXPECT_EQ(report.discs_laid_out, 0u);
+  const auto forced_whole = patches_of(relief, diffuv::Disc_components::whole, true, report);
+  ASSERT_EQ(forced_whole.number_of_patches(), 1u);
+  EXPECT_EQ(report.whole_components, 1u);
+  const Quality laid = atlas_quality(relief, judged), whole = atlas_quality(relief, forced_whole);
+  EXPECT_TRUE(laid.injective);
+  EXPECT_LT(laid.l2, 0.5 * whole.l2);
+  EXPECT_LT(laid.moved, whole.moved / 4);
+  EXPECT_GT(whole.moved, num_vertices(relief) / 2);  // as one patch, most of it is re-solved
+
+  const Mesh& good = diffuv_test::cgal_mesh("nefertiti.off");
+  const auto kept = patches_of(good, diffuv::Disc_components::judged, true, report);
+  EXPECT_EQ(kept.number_of_patches(), 1u);
+  EXPECT_EQ(report.whole_components, 1u);
+  EXPECT_EQ(report.discs_laid_out, 0u);
+  const Quality kept_quality = atlas_quality(good, kept);
+  EXPECT_TRUE(kept_quality.injective);
+  EXPECT_LE(kept_quality.l2, 2.0);
+  EXPECT_LE(kept_quality.moved, num_vertices(good) / 100);
+  const auto asked = patches_of(good, diffuv::Disc_components::laid_out, true, report);
+  EXPECT_GT(asked.number_of_patches(), 1u);
+  EXPECT_EQ(report.discs_laid_out, 1u);
+  EXPECT_EQ(report.whole_components, 0u);
+}
 
 
 } // namespace

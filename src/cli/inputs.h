@@ -92,7 +92,8 @@ inline void add_patch_options(CLI::App* cmd, Patch_cli_options& o)
                   "patches each); the cell-complex rules and the refinement then add cells where the surface needs "
                   "them, so below a few hundred they decide the count (cow: 231 patches for N = 1 to 6, 278 by "
                   "default, 287 for 100, 358 for 300); voronoi: N seeds to start from (default 12; more are added until every "
-                  "patch is a disc). A disc is one patch: on a mesh of discs the option has no effect (a warning says so)")
+                  "patch is a disc). A disc whose map as one patch is good stays one patch unless N is given; with voronoi a "
+                  "disc is always one patch, and on a mesh of discs the option has no effect (a warning says so)")
       ->check(number_in(1, 100000));
   cmd->add_flag("--no-split-caps", o.no_split_caps,
                 "voronoi layout: keep caps (patches with one neighbour all around, like a hand or an ear) whole "
@@ -201,6 +202,8 @@ inline diffuv::Segmentation<Mesh> make_patches(const Input_mesh& in, const Patch
   options.strict = o.strict;
   options.automatic.patches = o.patches > 0 ? o.patches : 12;
   options.quads.target_patches = o.patches;
+  // A number of patches asked for a disc: lay it out rather than keep it whole.
+  if(o.patches > 0) options.discs = diffuv::Disc_components::laid_out;
   diffuv::Raw_map_judge_options judging;
   judging.threads = o.threads;
   const diffuv::Raw_map_judge<Mesh, decltype(in.mesh.points())> judge(in.mesh, in.mesh.points(), judging);
@@ -208,7 +211,8 @@ inline diffuv::Segmentation<Mesh> make_patches(const Input_mesh& in, const Patch
   const diffuv::Status status = diffuv::disc_patches(in.mesh, in.mesh.points(), in.face_labels, seg, options, &report, judge);
   if(!status && o.strict)
     throw diffuv::Input_error(in.labels_path.empty() ? in.path : in.labels_path, 0, status.what());
-  // A disc is one patch whatever the seed count: say so rather than ignore it.
+  // With the Voronoi layout a disc is one patch whatever the seed count: say
+  // so rather than ignore it.
   if(o.patches > 0 && in.face_labels.empty() && !report.automatic)
     std::cerr << "diffuv: warning: --patches " << o.patches << " has no effect on " << in.path << ": "
               << (report.components <= 1 ? "the mesh is a disc, and a disc is one patch"
@@ -240,6 +244,9 @@ inline std::string patching_clause(const diffuv::Patching_report& r, const Patch
     if(r.corners_chosen > 0) s += " (" + std::to_string(r.corners_chosen) + " with corners chosen by their maps)";
     if(r.merged > 0) s += ", " + std::to_string(r.merged) + " merged (fewer than four border vertices)";
     if(r.cut > 0) s += ", " + count_text(r.cut, "region not a disc", "regions not discs") + " (cut into cells)";
+    if(r.discs_laid_out > 0)
+      s += ", " + count_text(r.discs_laid_out, "disc") + " laid out (" +
+           (o.patches > 0 ? std::string("--patches given") : std::string("as one patch its map would fold or stretch")) + ")";
   }
   if(r.flat_triangles_handed) s += ", " + flat_triangles_handed_clause(r.flat_triangles_handed);
   return s;

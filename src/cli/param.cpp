@@ -150,7 +150,8 @@ void add_common_options(CLI::App* cmd, Param_options& o)
       ->check(number_in(0, 1024))
       ->capture_default_str();
   cmd->add_option("mesh", o.mesh,
-                  "Triangle mesh (OFF, OBJ, PLY, STL). A disc is one patch; any other mesh is cut into disc patches. "
+                  "Triangle mesh (OFF, OBJ, PLY, STL). A disc whose map as one patch is good stays one patch; any other mesh "
+                  "is cut into disc patches. "
                   "Default: CGAL's cow.off");
   cmd->add_option("--corners", o.corners,
                   "Disc mesh only: CGAL *.selection.txt with four boundary vertex indices on its first line. The first "

@@ -15,6 +15,7 @@
 
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 
+#include <algorithm>
 #include <limits>
 #include <string>
 #include <type_traits>
@@ -29,9 +30,20 @@ enum class Patch_layout {
   voronoi  ///< Voronoi cells refined until discs, their runs of neighbours merged into four sides (diffuv 0.1)
 };
 
+/// What `disc_patches()` does, without labels, with a connected component
+/// that is a disc (quads layout).
+enum class Disc_components {
+  whole,     ///< one patch, its corners by equal arcs (diffuv 0.1)
+  /// one patch if the judge finds its map good, else laid out like any other
+  /// component (default; without a judge that maps, `No_refinement`, every disc stays whole)
+  judged,
+  laid_out   ///< laid out like any other component (e.g. when the user asks for a number of patches)
+};
+
 /// Options of `disc_patches()`.
 struct Patching_options {
   Patch_layout layout = Patch_layout::quads;  ///< automatic patches, and how labelled regions are split
+  Disc_components discs = Disc_components::judged;  ///< (quads layout, no labels) components that are discs
   bool split_caps = true;        ///< (voronoi layout) split caps (one neighbour all around) in two, as the paper recommends
   bool strict = false;           ///< report a labelled region that is not a disc instead of cutting it
   /// hand a face left flat by its patch's four sides to a neighbouring patch
@@ -47,6 +59,7 @@ struct Patching_report {
   Quad_layout_report layout;       ///< what the four-sided layout did (quads layout)
   std::size_t components = 1;      ///< connected components of the mesh (counted when no labels were given)
   std::size_t whole_components = 0;  ///< components that were discs, kept as one patch each
+  std::size_t discs_laid_out = 0;    ///< components that were discs, laid out (`Disc_components`)
   std::size_t merged = 0;          ///< patches with fewer than four boundary vertices merged into a neighbour
   std::size_t cut = 0;             ///< non-disc patches cut into discs
   std::size_t caps_split = 0;      ///< caps split in two
@@ -101,6 +114,26 @@ template <class Judge, class Seg>
 struct has_choose_corners<Judge, Seg, std::void_t<decltype(std::declval<const Judge&>().choose_corners(std::declval<Seg&>()))>>
   : std::true_type {};
 
+// Whether a judge offers `whole_patches_to_lay_out(const Segmentation&, const std::vector<char>&)`.
+template <class Judge, class Seg, class = void>
+struct has_whole_patch_judgement : std::false_type {};
+template <class Judge, class Seg>
+struct has_whole_patch_judgement<Judge, Seg, std::void_t<decltype(std::declval<const Judge&>().whole_patches_to_lay_out(
+                                                 std::declval<const Seg&>(), std::declval<const std::vector<char>&>()))>>
+  : std::true_type {};
+
+// The patches flagged in `candidates` that the judge would not keep whole:
+// by their whole map if it offers that judgement, else by its verdict on a layout.
+template <class Judge, class TriangleMesh>
+std::vector<std::size_t> whole_patches_to_lay_out(const Judge& judge, const Segmentation<TriangleMesh>& seg,
+                                                  const std::vector<char>& candidates)
+{
+  if constexpr(has_whole_patch_judgement<Judge, Segmentation<TriangleMesh>>::value)
+    return judge.whole_patches_to_lay_out(seg, candidates);
+  else
+    return judge_candidates(judge, seg, candidates);
+}
+
 // disc_patches() with the four-sided layout.
 template <class TriangleMesh, class VertexPointMap, class Judge>
 Status four_sided_patches(const TriangleMesh& tm, std::vector<int> face_labels, VertexPointMap vpm,
@@ -123,14 +156,27 @@ Status four_sided_patches(const TriangleMesh& tm, std::vector<int> face_labels, 
       }
     if(!r.not_discs.empty()) return check_patch_disc(tm, seg, r.not_discs.front());
   } else {
-    // A component that is a disc stays one patch (its corners by equal arcs);
-    // any other one is laid out.
+    // A component that is a disc may stay one patch (its corners by equal
+    // arcs): with `judged`, if the judge finds its map good (a disc whose
+    // square map folds or stretches, like a relief with a ragged border, is
+    // served better by the layout). Any other component is laid out.
     const std::vector<int> component_labels(component.begin(), component.end());
     const Segmentation<TriangleMesh> by_component = patches_from_labels(tm, vpm, component_labels);
+    const std::size_t nc = by_component.number_of_patches();
+    std::vector<char> whole(nc, 0);
+    for(std::size_t c = 0; c < nc; ++c) whole[c] = options.discs != Disc_components::laid_out && check_patch_disc(tm, by_component, c);
+    if(options.discs == Disc_components::judged && std::find(whole.begin(), whole.end(), 1) != whole.end())
+      for(std::size_t c : whole_patches_to_lay_out(judge, by_component, whole)) {
+        whole[c] = 0;
+        ++r.discs_laid_out;
+      }
+    if(options.discs == Disc_components::laid_out)
+      for(std::size_t c = 0; c < nc; ++c)
+        if(check_patch_disc(tm, by_component, c)) ++r.discs_laid_out;
     face_labels.assign(num_faces(tm), std::numeric_limits<int>::min());
     bool any = false;
-    for(std::size_t c = 0; c < by_component.number_of_patches(); ++c) {
-      if(check_patch_disc(tm, by_component, c)) { ++r.whole_components; continue; }
+    for(std::size_t c = 0; c < nc; ++c) {
+      if(whole[c]) { ++r.whole_components; continue; }
       any = true;
       for(auto f : by_component.patch_faces[c]) face_labels[get(findex, f)] = static_cast<int>(c);
     }
@@ -152,8 +198,8 @@ Status four_sided_patches(const TriangleMesh& tm, std::vector<int> face_labels, 
     };
     for(std::size_t p = 0; p < laid.number_of_patches(); ++p)
       add(laid.patch_faces[p], laid.patch_corners.empty() ? Segmentation<TriangleMesh>::no_corners() : laid.patch_corners[p]);
-    for(std::size_t c = 0; c < by_component.number_of_patches(); ++c)
-      if(check_patch_disc(tm, by_component, c)) add(by_component.patch_faces[c], Segmentation<TriangleMesh>::no_corners());
+    for(std::size_t c = 0; c < nc; ++c)
+      if(whole[c]) add(by_component.patch_faces[c], Segmentation<TriangleMesh>::no_corners());
   }
   if(labelled) {
     Segmentation<TriangleMesh> laid;
@@ -187,9 +233,12 @@ Status four_sided_patches(const TriangleMesh& tm, std::vector<int> face_labels, 
 /// With `face_labels` (#F entries), each connected component of a label is a
 /// patch; patches with fewer than four boundary vertices are merged into a
 /// neighbour; a patch that is not a disc is cut into discs (or, with `strict`,
-/// reported); caps are split in two. Without labels (empty vector), each
-/// connected component that is a disc is one patch and any other component is
-/// cut automatically (`voronoi_discs()`). Last, a face that the patch's four
+/// reported); caps are split in two. Without labels (empty vector), any
+/// connected component that is not a disc is cut automatically
+/// (`quad_layout()`, or `voronoi_discs()` with the Voronoi layout); one that
+/// is a disc is one patch, or, with the quads layout, as `options.discs`
+/// says: by default laid out too if `judge` finds its map as one patch bad
+/// (`Raw_map_judge`: it folds or stretches). Last, a face that the patch's four
 /// sides would leave flat is handed to a neighbouring patch
 /// (`hand_flat_triangles_to_neighbours()`, `hand_off_flat_triangles`).
 ///

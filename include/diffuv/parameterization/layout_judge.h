@@ -302,6 +302,9 @@ struct Raw_map_judge_options {
   double max_stretch = 2.0;  ///< L2 stretch of a patch's map (1 = isometric up to scale)
   double max_area = 2.5;     ///< mean area distortion of a patch's map
   std::size_t threads = 0;   ///< threads mapping the patches (0: all, with oneTBB)
+  /// (`whole_patches_to_lay_out()`) the fraction of a patch's vertices that
+  /// the repair may move (issue #18's target: 1 %)
+  double max_moved = 0.01;
 };
 
 /// Judges a layout by the raw diffusion map of each patch (fast marching, no
@@ -366,6 +369,39 @@ public:
       if(!keys[p].empty()) verdicts_->emplace(std::move(keys[p]), is_bad);
     }
     std::sort(bad.begin(), bad.end());
+    return bad;
+  }
+
+  /// The patches flagged in `candidates` (#patches entries) that should not
+  /// stay one patch: their map by the default pipeline (fast marching and
+  /// the repair, corners by the rule) is not one-to-one, exceeds
+  /// `max_stretch` or `max_area`, or had more than `max_moved` of its
+  /// vertices moved by the repair (a patch that cannot be mapped at all is
+  /// not returned: a layout would not help it). Called by `disc_patches()` about the
+  /// components that are discs: a disc whose raw map folds a little but whose
+  /// repaired map is good (a cylinder locally refined: 22 of 8,000 vertices
+  /// moved, L2 1.007) stays whole. \returns positions, in increasing order
+  std::vector<std::size_t> whole_patches_to_lay_out(const Segmentation<TriangleMesh>& seg, const std::vector<char>& candidates) const
+  {
+    const std::size_t n = seg.number_of_patches();
+    Segmentation<TriangleMesh> to_map = seg;
+    for(std::size_t p = 0; p < n; ++p)
+      if(p >= candidates.size() || !candidates[p]) to_map.patch_faces[p].clear();
+    Uv_atlas<TriangleMesh> atlas(*tm_);
+    const auto results = parameterize_patches<Fmm_distance_tag>(*tm_, vpm_, to_map, atlas, Patch_parameterization_options{Repair_options(), nullptr, true, options_.threads});
+    std::vector<std::size_t> bad;
+    for(std::size_t p = 0; p < n; ++p) {
+      // A patch that cannot be mapped at all (a lone triangle: fewer than
+      // four border vertices) gains nothing from a layout: it stays, and the
+      // pipeline reports it.
+      if(p >= candidates.size() || !candidates[p] || !results[p].status) continue;
+      const std::size_t c = results[p].chart;
+      const Distortion_summary d = measure_distortion(*tm_, vpm_, atlas.chart(c).faces, atlas.chart_texture_map(c));
+      const double moved = static_cast<double>(results[p].repair.moved_vertices + results[p].repair.moved_border_vertices);
+      if(!d.injective() || d.stretch_l2 > options_.max_stretch || d.area_mean > options_.max_area ||
+         moved > options_.max_moved * static_cast<double>(atlas.chart(c).vertices.size()))
+        bad.push_back(p);
+    }
     return bad;
   }
 
