@@ -295,7 +295,7 @@ void add_compare_command(CLI::App& app)
                  "table of time and distortion");
   cmd->add_option("mesh", options->mesh, "Triangle mesh (OFF, OBJ, PLY, STL). Default: CGAL's nefertiti.off");
   cmd->add_option("--corners", options->corners,
-                  "Disc mesh only: CGAL *.selection.txt with four boundary vertex indices (the first goes to (0,0), "
+                  "Disc mesh only, mapped as one patch: CGAL *.selection.txt with four boundary vertex indices (the first goes to (0,0), "
                   "the others follow counter-clockwise). Default: the corners diffuv param chooses");
   add_patch_options(cmd, options->patches);
   cmd->add_option("--methods", options->methods,

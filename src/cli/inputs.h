@@ -80,7 +80,7 @@ inline void add_patch_options(CLI::App* cmd, Patch_cli_options& o)
   cmd->add_option("--labels", o.labels,
                   "Region label file: one integer per face of the mesh file (file order). Each connected region is a "
                   "patch; the borders between regions are the sides. Default: the colours or integer face property "
-                  "painted in a PLY/OFF mesh, else automatic patches for a mesh that is not a disc");
+                  "painted in a PLY/OFF mesh, else automatic patches (a disc whose map as one patch is good stays one patch)");
   cmd->add_option("--layout", o.layout,
                   "How patches are made where no labels say: quads (four-sided patches, conforming, refined until each "
                   "patch's raw map is good; labelled regions are split into them too) or voronoi (Voronoi cells whose "
@@ -232,7 +232,10 @@ inline std::string patching_clause(const diffuv::Patching_report& r, const Patch
     if(r.voronoi_instead) s = "the four-sided layout left a patch that is not a disc: Voronoi patches instead; " + s;
   } else {
     const auto& l = r.layout;
-    if(l.cells == 0 && l.kept_regions == 0) return r.flat_triangles_handed ? flat_triangles_handed_clause(r.flat_triangles_handed) : "each disc component is one patch";
+    if(l.cells == 0 && l.kept_regions == 0)
+      return r.flat_triangles_handed ? flat_triangles_handed_clause(r.flat_triangles_handed)
+                                     : r.components > 1 ? "each disc kept whole: its map as one patch is good"
+                                                        : "kept whole: its map as one patch is good";
     s = "four-sided layout: " + count_text(l.quads, "quad");
     if(l.kept_regions > 0) {
       s += " (the regions, kept whole)";

@@ -154,7 +154,7 @@ void add_common_options(CLI::App* cmd, Param_options& o)
                   "is cut into disc patches. "
                   "Default: CGAL's cow.off");
   cmd->add_option("--corners", o.corners,
-                  "Disc mesh only: CGAL *.selection.txt with four boundary vertex indices on its first line. The first "
+                  "Disc mesh only, mapped as one patch: CGAL *.selection.txt with four boundary vertex indices on its first line. The first "
                   "goes to (0,0), the others follow counter-clockwise along the boundary to (1,0), (1,1), (0,1). "
                   "Default: automatic (the sharpest boundary vertex, then equal arc lengths)");
   add_patch_options(cmd, o.patches);

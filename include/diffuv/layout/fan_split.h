@@ -18,6 +18,12 @@
 
 #include <boost/graph/graph_traits.hpp>
 
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+#endif
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -352,6 +358,14 @@ public:
     Fan_failure failure = Fan_failure::no_cuts;
     Fan fan;
     vertex_descriptor centre;
+    bool prefetched = false;  // made by prefetch(), not asked for yet
+  };
+
+  /// What `fan()` is asked: a region's faces and loop (not owned) and its targets.
+  struct Request {
+    const std::vector<face_descriptor>* faces;
+    const std::vector<vertex_descriptor>* loop;
+    std::vector<vertex_descriptor> targets;
   };
 
   /// The fan of the region of `faces` bounded by `loop`, to `targets` (mesh
@@ -360,6 +374,66 @@ public:
   const Entry& fan(const TriangleMesh& tm, VertexPointMap vpm, const std::vector<face_descriptor>& faces,
                    const std::vector<vertex_descriptor>& loop, const std::vector<vertex_descriptor>& targets,
                    std::vector<int>& scratch)
+  {
+    std::vector<std::size_t> key = key_of(tm, faces, loop, targets);
+    const auto found = memo_.find(key);
+    if(found != memo_.end()) {
+      // A fan prefetched for this request counts as made for it.
+      if(found->second.prefetched) {
+        found->second.prefetched = false;
+        ++misses_;
+      } else {
+        ++hits_;
+      }
+      return found->second;
+    }
+    ++misses_;
+    return memo_.emplace(std::move(key), make(tm, vpm, faces, loop, targets, scratch)).first->second;
+  }
+
+  /// Makes the fans of `requests` that are not in the memo yet, in parallel
+  /// with oneTBB (one after the other without it), so that the `fan()` calls
+  /// that follow find them. A fan depends on its request alone, so the fans,
+  /// and the counts of hits and misses, are those of asking one by one.
+  template <class VertexPointMap>
+  void prefetch(const TriangleMesh& tm, VertexPointMap vpm, const std::vector<Request>& requests)
+  {
+    std::vector<std::vector<std::size_t>> keys;
+    std::vector<const Request*> missing;
+    std::unordered_map<std::vector<std::size_t>, char, Index_list_hash> listed;
+    for(const Request& q : requests) {
+      std::vector<std::size_t> key = key_of(tm, *q.faces, *q.loop, q.targets);
+      if(memo_.count(key) || !listed.emplace(key, 1).second) continue;
+      keys.push_back(std::move(key));
+      missing.push_back(&q);
+    }
+    std::vector<Entry> made(missing.size());
+    auto make_range = [&](std::size_t begin, std::size_t end, std::vector<int>& scratch) {
+      for(std::size_t i = begin; i < end; ++i) made[i] = make(tm, vpm, *missing[i]->faces, *missing[i]->loop, missing[i]->targets, scratch);
+    };
+#ifdef CGAL_LINKED_WITH_TBB
+    if(missing.size() > 1) {
+      tbb::enumerable_thread_specific<std::vector<int>> scratch([&] { return std::vector<int>(num_vertices(tm), -1); });
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, missing.size(), 1),
+                        [&](const tbb::blocked_range<std::size_t>& r) { make_range(r.begin(), r.end(), scratch.local()); });
+    } else
+#endif
+    {
+      std::vector<int> scratch(num_vertices(tm), -1);
+      make_range(0, missing.size(), scratch);
+    }
+    for(std::size_t i = 0; i < made.size(); ++i) {
+      made[i].prefetched = true;
+      memo_.emplace(std::move(keys[i]), std::move(made[i]));
+    }
+  }
+
+  std::size_t hits() const { return hits_; }
+  std::size_t misses() const { return misses_; }
+
+private:
+  static std::vector<std::size_t> key_of(const TriangleMesh& tm, const std::vector<face_descriptor>& faces,
+                                         const std::vector<vertex_descriptor>& loop, const std::vector<vertex_descriptor>& targets)
   {
     auto vindex = get(boost::vertex_index, tm);
     auto findex = get(boost::face_index, tm);
@@ -370,25 +444,23 @@ public:
     for(vertex_descriptor v : loop) key.push_back(get(vindex, v));
     key.push_back(separator);
     for(vertex_descriptor v : targets) key.push_back(get(vindex, v));
-    const auto found = memo_.find(key);
-    if(found != memo_.end()) {
-      ++hits_;
-      return found->second;
-    }
-    ++misses_;
+    return key;
+  }
+
+  template <class VertexPointMap>
+  static Entry make(const TriangleMesh& tm, VertexPointMap vpm, const std::vector<face_descriptor>& faces,
+                    const std::vector<vertex_descriptor>& loop, const std::vector<vertex_descriptor>& targets, std::vector<int>& scratch)
+  {
+    auto vindex = get(boost::vertex_index, tm);
     const auto region = make_local_region(tm, vpm, faces, loop, scratch);
     std::vector<int> local_targets;
     for(vertex_descriptor v : targets) local_targets.push_back(region.local(get(vindex, v)));
     Entry entry;
     entry.failure = fan_split(region, local_targets, entry.fan);
     if(entry.failure == Fan_failure::none) entry.centre = region.verts[entry.fan.centre];
-    return memo_.emplace(std::move(key), std::move(entry)).first->second;
+    return entry;
   }
 
-  std::size_t hits() const { return hits_; }
-  std::size_t misses() const { return misses_; }
-
-private:
   static constexpr std::size_t separator = std::numeric_limits<std::size_t>::max();
   std::unordered_map<std::vector<std::size_t>, Entry, Index_list_hash> memo_;
   std::size_t hits_ = 0, misses_ = 0;

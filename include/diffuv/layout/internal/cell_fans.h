@@ -65,6 +65,17 @@ std::vector<Cell_fan<TriangleMesh>> fan_cells(const TriangleMesh& tm, VertexPoin
   auto& arcs = complex.arcs;
   std::vector<Cell_fan<TriangleMesh>> fans(nc);
   for(std::size_t c = 0; c < nc; ++c) fans[c].done = complex.framed[c];
+  // The fans the first pass below asks for, made in parallel beforehand.
+  std::vector<typename Fan_memo<TriangleMesh>::Request> first_pass;
+  for(std::size_t c = 0; c < nc; ++c) {
+    if(complex.fallback[c] || fans[c].done) continue;
+    const Cell_rim<TriangleMesh>& cc = complex.cell[c];
+    std::vector<vertex_descriptor> targets;
+    for(std::size_t a = 0; a < cc.arc.size(); ++a)
+      if(!arcs[cc.arc[a]].collapsed) targets.push_back(arcs[cc.arc[a]].mid);
+    if(targets.size() >= 2) first_pass.push_back({&cells.patch_faces[c], &cc.loop.vertices, std::move(targets)});
+  }
+  fans_made.prefetch(tm, vpm, first_pass);
   for(bool again = true; again;) {
     again = false;
     for(std::size_t c = 0; c < nc; ++c) {

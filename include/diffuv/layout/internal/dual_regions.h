@@ -138,6 +138,24 @@ void split_dual_regions(const TriangleMesh& tm, VertexPointMap vpm, const Segmen
     if(centres == 0 && junctions == 1) return junction;
     return boost::graph_traits<TriangleMesh>::null_vertex();
   };
+  {
+    // The fans the loop below asks for, made in parallel beforehand (the same
+    // tests pick the regions and their targets).
+    std::vector<std::vector<vertex_descriptor>> loop_of(duals.number_of_patches());
+    std::vector<typename Fan_memo<TriangleMesh>::Request> wanted;
+    for(std::size_t t = 0; t < duals.number_of_patches(); ++t) {
+      if(!check_patch_disc(tm, duals, t)) continue;
+      loop_of[t] = patch_loops(tm, vpm, duals, t).front().vertices;
+      std::vector<vertex_descriptor> targets;
+      bool framed = false;
+      for(vertex_descriptor v : loop_of[t]) {
+        framed = framed || framed_junction[get(vindex, v)];
+        if(is_mid[get(vindex, v)]) targets.push_back(v);
+      }
+      if(!framed && targets.size() >= 2) wanted.push_back({&duals.patch_faces[t], &loop_of[t], std::move(targets)});
+    }
+    fans_made.prefetch(tm, vpm, wanted);
+  }
   for(std::size_t t = 0; t < duals.number_of_patches(); ++t) {
     bool ok = static_cast<bool>(check_patch_disc(tm, duals, t));
     if(ok) {
