@@ -119,6 +119,8 @@ TEST_F(Tool, ValuesTheToolCannotUseAreRefused)
       {"param " + mesh + " --patches abc", "expects a whole number from 1 to 100000, not 'abc'"},  // was "not in range"
       {"render " + mesh + " --azimuth 500", "expects a number from -360 to 360, not '500'"},
       {"segment " + mesh + " --layout quads --no-split-caps", "--no-split-caps: applies to --layout voronoi only"},
+      {"param " + mesh + " --corners c.selection.txt --patches 5", "--corners: maps the disc as one patch: --patches does not apply"},
+      {"compare " + mesh + " --corners c.selection.txt --patches 5", "--corners: maps the disc as one patch: --patches does not apply"},
   };
   for(const auto& [args, reason] : cases) {
     const Tool_run r = run(args + " -o " + out_dir().string());

@@ -146,6 +146,8 @@ void run_compare(const Compare_options& options)
   check_patch_options(options.patches);
   if(!options.corners.empty() && !options.patches.labels.empty())
     throw CLI::ValidationError("--corners", "applies to a disc mesh without --labels");
+  if(!options.corners.empty() && options.patches.patches > 0)
+    throw CLI::ValidationError("--corners", "maps the disc as one patch: --patches does not apply");
   const std::string mesh_path = options.mesh.empty() ? default_mesh("nefertiti.off") : options.mesh;
   const Input_mesh in = read_input(mesh_path, options.patches);
   const Mesh& mesh = in.mesh;

@@ -56,6 +56,8 @@ void run_param(const Param_options& options)
   check_patch_options(options.patches);
   if(!options.corners.empty() && (!options.patches.labels.empty()))
     throw CLI::ValidationError("--corners", "applies to a disc mesh without --labels");
+  if(!options.corners.empty() && options.patches.patches > 0)
+    throw CLI::ValidationError("--corners", "maps the disc as one patch: --patches does not apply");
   const std::string mesh_path = options.mesh.empty() ? default_mesh("cow.off") : options.mesh;
   Stage_clock stages;
   // A file this large takes seconds to read: say so before, not only after.
