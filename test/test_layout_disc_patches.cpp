@@ -25,6 +25,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <memory>
 #include <numeric>
 #include <random>
@@ -319,6 +320,54 @@ TEST(DiscPatches, ADiscIsLaidOutWhenOneSquareWouldNotServeIt)
   EXPECT_GT(asked.number_of_patches(), 1u);
   EXPECT_EQ(report.discs_laid_out, 1u);
   EXPECT_EQ(report.whole_components, 0u);
+}
+
+
+// A labelled region that is a whole component and a disc follows the same
+// rule as a disc without labels, so labels read back from `segment` give the
+// patches they came from: nefertiti with one label stays one patch with that
+// label; lion-head with one label is laid out, face for face as without labels.
+TEST(DiscPatches, ALabelledDiscFollowsTheRuleForDiscs)
+{
+  using diffuv_test::Mesh;
+  using Judge = diffuv::Raw_map_judge<Mesh, decltype(std::declval<const Mesh&>().points())>;
+  auto patches_of = [](const Mesh& m, std::vector<int> labels, diffuv::Disc_components discs, diffuv::Patching_report& report) {
+    diffuv::Patching_options options;
+    options.discs = discs;
+    diffuv::Segmentation<Mesh> seg;
+    const diffuv::Status status = diffuv::disc_patches(m, m.points(), std::move(labels), seg, options, &report, Judge(m, m.points()));
+    EXPECT_TRUE(status.ok()) << status.what();
+    return seg;
+  };
+  diffuv::Patching_report report;
+  const Mesh& good = diffuv_test::cgal_mesh("nefertiti.off");
+  const auto kept = patches_of(good, std::vector<int>(num_faces(good), 7), diffuv::Disc_components::judged, report);
+  ASSERT_EQ(kept.number_of_patches(), 1u);
+  EXPECT_EQ(kept.patch_label[0], 7);
+  EXPECT_EQ(kept.patch_faces[0].size(), num_faces(good));
+  EXPECT_EQ(kept.corners(0), nullptr);
+  EXPECT_EQ(report.whole_components, 1u);
+  EXPECT_EQ(report.discs_laid_out, 0u);
+  const auto asked = patches_of(good, std::vector<int>(num_faces(good), 7), diffuv::Disc_components::laid_out, report);
+  EXPECT_GT(asked.number_of_patches(), 1u);
+  EXPECT_EQ(report.discs_laid_out, 1u);
+  EXPECT_EQ(report.whole_components, 0u);
+
+  const Mesh& relief = diffuv_test::cgal_mesh("lion-head.off");
+  const auto labelled = patches_of(relief, std::vector<int>(num_faces(relief), 3), diffuv::Disc_components::judged, report);
+  EXPECT_EQ(report.discs_laid_out, 1u);
+  EXPECT_EQ(report.whole_components, 0u);
+  EXPECT_GT(labelled.number_of_patches(), 20u);
+  for(int label : labelled.patch_label) EXPECT_EQ(label, 3);
+  const auto unlabelled = patches_of(relief, {}, diffuv::Disc_components::judged, report);
+  ASSERT_EQ(unlabelled.number_of_patches(), labelled.number_of_patches());
+  // The same partition of the faces (patch numbers may differ).
+  std::map<std::size_t, std::size_t> to_unlabelled;
+  for(std::size_t f = 0; f < num_faces(relief); ++f) {
+    const auto [it, inserted] = to_unlabelled.emplace(labelled.face_patch[f], unlabelled.face_patch[f]);
+    EXPECT_EQ(it->second, unlabelled.face_patch[f]) << "face " << f;
+  }
+  EXPECT_EQ(to_unlabelled.size(), unlabelled.number_of_patches());
 }
 
 

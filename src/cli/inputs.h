@@ -255,6 +255,8 @@ inline std::string patching_clause(const diffuv::Patching_report& r, const Patch
     if(r.discs_laid_out > 0)
       s += ", " + count_text(r.discs_laid_out, "disc") + " laid out (" +
            (o.patches > 0 ? std::string("--patches given") : std::string("as one patch its map would fold or stretch")) + ")";
+    if(r.whole_components > 0)
+      s += ", " + count_text(r.whole_components, "disc") + " kept whole (good as one patch)";
   }
   if(r.flat_triangles_handed) s += ", " + flat_triangles_handed_clause(r.flat_triangles_handed);
   return s;

@@ -30,8 +30,8 @@ enum class Patch_layout {
   voronoi  ///< Voronoi cells refined until discs, their runs of neighbours merged into four sides (diffuv 0.1)
 };
 
-/// What `disc_patches()` does, without labels, with a connected component
-/// that is a disc (quads layout).
+/// What `disc_patches()` does with a connected component that is a disc (no
+/// labels, or one label on all of it; quads layout).
 enum class Disc_components {
   whole,     ///< one patch, its corners by equal arcs (diffuv 0.1)
   /// one patch if the judge finds its map good, else laid out like any other
@@ -43,7 +43,7 @@ enum class Disc_components {
 /// Options of `disc_patches()`.
 struct Patching_options {
   Patch_layout layout = Patch_layout::quads;  ///< automatic patches, and how labelled regions are split
-  Disc_components discs = Disc_components::judged;  ///< (quads layout, no labels) components that are discs
+  Disc_components discs = Disc_components::judged;  ///< (quads layout) components that are discs, labelled as one region or not
   bool split_caps = true;        ///< (voronoi layout) split caps (one neighbour all around) in two, as the paper recommends
   bool strict = false;           ///< report a labelled region that is not a disc instead of cutting it
   /// hand a face left flat by its patch's four sides to a neighbouring patch
@@ -141,6 +141,7 @@ Status four_sided_patches(const TriangleMesh& tm, std::vector<int> face_labels, 
 {
   auto findex = get(boost::face_index, tm);
   const bool labelled = !face_labels.empty();
+  bool labelled_done = false;  // labelled regions laid out already (some discs kept whole)
   std::vector<std::size_t> component(num_faces(tm));
   r.components = CGAL::Polygon_mesh_processing::connected_components(
       tm, boost::make_iterator_property_map(component.begin(), findex));
@@ -155,6 +156,50 @@ Status four_sided_patches(const TriangleMesh& tm, std::vector<int> face_labels, 
         else ++r.cut;  // its cells are discs
       }
     if(!r.not_discs.empty()) return check_patch_disc(tm, seg, r.not_discs.front());
+    // A region that is a whole component and a disc follows the rule for disc
+    // components below, so that labels read back from `segment` (one label on
+    // a disc kept whole) give the same patches.
+    std::vector<std::size_t> component_faces(r.components, 0);
+    for(std::size_t c : component) ++component_faces[c];
+    std::vector<char> whole(seg.number_of_patches(), 0);
+    for(std::size_t p = 0; p < seg.number_of_patches(); ++p)
+      whole[p] = !seg.patch_faces[p].empty() &&
+                 seg.patch_faces[p].size() == component_faces[component[get(findex, seg.patch_faces[p].front())]] &&
+                 check_patch_disc(tm, seg, p);
+    const std::size_t discs = static_cast<std::size_t>(std::count(whole.begin(), whole.end(), 1));
+    if(options.discs == Disc_components::laid_out) {
+      r.discs_laid_out = discs;
+      whole.assign(whole.size(), 0);
+    } else if(options.discs == Disc_components::judged && discs > 0) {
+      for(std::size_t p : whole_patches_to_lay_out(judge, seg, whole)) {
+        whole[p] = 0;
+        ++r.discs_laid_out;
+      }
+    }
+    if(std::find(whole.begin(), whole.end(), 1) != whole.end()) {
+      bool any = false;
+      for(std::size_t p = 0; p < seg.number_of_patches(); ++p) {
+        if(!whole[p]) { any = true; continue; }
+        ++r.whole_components;
+        for(auto f : seg.patch_faces[p]) face_labels[get(findex, f)] = std::numeric_limits<int>::min();
+      }
+      Segmentation<TriangleMesh> laid;
+      if(any) quad_layout(tm, vpm, face_labels, laid, options.quads, &r.layout, judge);
+      Segmentation<TriangleMesh> kept = laid;
+      if(kept.face_patch.empty()) kept.face_patch.assign(num_faces(tm), Segmentation<TriangleMesh>::no_patch);
+      if(kept.patch_corners.size() < kept.patch_faces.size())
+        kept.patch_corners.resize(kept.patch_faces.size(), Segmentation<TriangleMesh>::no_corners());
+      for(std::size_t p = 0; p < seg.number_of_patches(); ++p) {
+        if(!whole[p]) continue;
+        for(auto f : seg.patch_faces[p]) kept.face_patch[get(findex, f)] = kept.patch_faces.size();
+        kept.patch_label.push_back(seg.patch_label[p]);
+        kept.patch_part.push_back(0);
+        kept.patch_faces.push_back(seg.patch_faces[p]);
+        kept.patch_corners.push_back(Segmentation<TriangleMesh>::no_corners());
+      }
+      seg = std::move(kept);
+      labelled_done = true;
+    }
   } else {
     // A component that is a disc may stay one patch (its corners by equal
     // arcs): with `judged`, if the judge finds its map good (a disc whose
@@ -201,7 +246,7 @@ Status four_sided_patches(const TriangleMesh& tm, std::vector<int> face_labels, 
     for(std::size_t c = 0; c < nc; ++c)
       if(whole[c]) add(by_component.patch_faces[c], Segmentation<TriangleMesh>::no_corners());
   }
-  if(labelled) {
+  if(labelled && !labelled_done) {
     Segmentation<TriangleMesh> laid;
     quad_layout(tm, vpm, face_labels, laid, options.quads, &r.layout, judge);
     seg = std::move(laid);
@@ -233,7 +278,9 @@ Status four_sided_patches(const TriangleMesh& tm, std::vector<int> face_labels, 
 /// With `face_labels` (#F entries), each connected component of a label is a
 /// patch; patches with fewer than four boundary vertices are merged into a
 /// neighbour; a patch that is not a disc is cut into discs (or, with `strict`,
-/// reported); caps are split in two. Without labels (empty vector), any
+/// reported); the regions are split into four-sided patches, except a region
+/// that is a whole connected component and a disc, which follows the rule for
+/// disc components below. Without labels (empty vector), any
 /// connected component that is not a disc is cut automatically
 /// (`quad_layout()`, or `voronoi_discs()` with the Voronoi layout); one that
 /// is a disc is one patch, or, with the quads layout, as `options.discs`
