@@ -390,6 +390,58 @@ TEST(QuadLayout, FallbackCornersChosenByTheirMapsServeThemBetter)
   EXPECT_LT(total_after.stretch_l2, total_before.stretch_l2);
 }
 
+// The judge's corner search tries the layout's quads too (issue #18): a quad
+// whose map by its own corners (its cell's junctions) has L2 above 1.5 may
+// take four other border vertices. Every quad whose corners changed maps
+// better through the default pipeline (mapped again here, not by the
+// search's own scoring), the faces stay as they were, and the atlas's L2 is
+// lower than with the quads' corners kept.
+TEST(QuadLayout, QuadCornersChosenByTheirMapsServeThemBetter)
+{
+  const Mesh& cow = cgal_mesh("cow.off");
+  Seg rule = automatic_layout(cow);
+  diffuv::Fallback_corner_options fallback_only = diffuv::Raw_map_judge_options().corners;
+  ASSERT_TRUE(fallback_only.patches_with_corners);  // the judge's default
+  fallback_only.patches_with_corners = false;
+  diffuv::choose_fallback_corners(cow, cow.points(), rule, fallback_only);
+  Seg chosen = rule;
+  const std::size_t set = diffuv::choose_fallback_corners(cow, cow.points(), chosen, diffuv::Raw_map_judge_options().corners);
+  EXPECT_EQ(chosen.face_patch, rule.face_patch);
+
+  auto map_all = [&](const Seg& seg) {
+    diffuv::Uv_atlas<Mesh> atlas(cow);
+    const auto results = diffuv::parameterize_patches(cow, cow.points(), seg, atlas);
+    std::vector<diffuv::Distortion_summary> d(results.size());
+    for(std::size_t p = 0; p < results.size(); ++p) {
+      EXPECT_TRUE(results[p].status.ok()) << p;
+      if(results[p].status.ok())
+        d[p] = diffuv::measure_distortion(cow, cow.points(), atlas.chart(results[p].chart).faces,
+                                          atlas.chart_texture_map(results[p].chart));
+    }
+    return d;
+  };
+  const auto before = map_all(rule), after = map_all(chosen);
+  std::size_t quads_changed = 0, changed = 0;
+  diffuv::Distortion_summary total_before, total_after;
+  for(std::size_t p = 0; p < rule.number_of_patches(); ++p) {
+    total_before = diffuv::combined(total_before, before[p]);
+    total_after = diffuv::combined(total_after, after[p]);
+    EXPECT_TRUE(after[p].injective()) << p;
+    const bool kept = rule.corners(p) ? chosen.corners(p) && *rule.corners(p) == *chosen.corners(p) : !chosen.corners(p);
+    if(kept) {
+      EXPECT_EQ(after[p].stretch_l2, before[p].stretch_l2) << p;
+      continue;
+    }
+    ++changed;
+    if(rule.corners(p)) ++quads_changed;
+    EXPECT_LE(after[p].stretch_l2, 0.98 * before[p].stretch_l2) << p;
+  }
+  EXPECT_GT(quads_changed, 10u);
+  EXPECT_LE(changed, set);
+  EXPECT_TRUE(total_after.injective());
+  EXPECT_LT(total_after.stretch_l2, 0.97 * total_before.stretch_l2);
+}
+
 // The quick estimate of a choice of corners is its raw map's L2 stretch: with
 // graph distances (where a side's distance is exactly the least of its arcs')
 // it equals the L2 that measure_distortion() gives the map that

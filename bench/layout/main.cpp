@@ -8,11 +8,12 @@
 // repair, all threads), medians of --runs runs.
 //
 // Table 2 (--corners), per mesh: the layout without the corner choice, then
-// choose_fallback_corners() with every candidate mapped, and with candidates
-// ranked by the quick estimate (large patches only, the default, and every
-// patch, mapping 1, 2 or 3): the atlas's L2 stretch after the default
-// pipeline, the vertices the repair moved, the patches given corners and the
-// search's time (one run each).
+// choose_fallback_corners() on the fallback patches only (every candidate
+// mapped; candidates ranked by the quick estimate on large patches only, and
+// on every patch, mapping 1, 2 or 3), and on the quads too (every candidate
+// mapped, and the judge's default: ranked, 3 mapped, L2 above 1.5): the
+// atlas's L2 stretch after the default pipeline, the vertices the repair
+// moved, the patches given corners and the search's time (one run each).
 //
 // Usage: diffuv_layout_bench [--runs 3] [--meshes cow,man,...] [--corners] [-o DIR]
 // Writes DIR/layout.md.
@@ -106,7 +107,7 @@ int main(int argc, char** argv)
       diffuv::disc_patches(m, m.points(), {}, rule, diffuv::Patching_options(), nullptr, Judge_without_corners{judge});
       const double corners_ms = median_time(runs, [&] {
         Seg trial = rule;
-        diffuv::choose_fallback_corners(m, m.points(), trial);
+        diffuv::choose_fallback_corners(m, m.points(), trial, diffuv::Raw_map_judge_options().corners);
       });
       const double map_ms = median_time(runs, [&] {
         diffuv::Uv_atlas<Mesh> atlas(m);
@@ -121,14 +122,22 @@ int main(int argc, char** argv)
       struct Setting {
         const char* name;
         std::size_t from, mapped;
+        bool quads;
+        double min_stretch;
       };
       const std::size_t never = std::numeric_limits<std::size_t>::max();
-      for(const Setting& s : {Setting{"every candidate mapped", never, 35}, Setting{"ranked, large patches (default)", 2000, 2},
-                              Setting{"ranked, every patch", 0, 1}, Setting{"ranked, every patch", 0, 2},
-                              Setting{"ranked, every patch", 0, 3}}) {
+      for(const Setting& s : {Setting{"fallback: every candidate mapped", never, 35, false, 2.0},
+                              Setting{"fallback: ranked, large patches (before 2026-12-04)", 2000, 2, false, 2.0},
+                              Setting{"fallback: ranked, every patch", 0, 1, false, 2.0},
+                              Setting{"fallback: ranked, every patch", 0, 2, false, 2.0},
+                              Setting{"fallback: ranked, every patch", 0, 3, false, 2.0},
+                              Setting{"quads too, L2 > 1.5: every candidate mapped", never, 35, true, 1.5},
+                              Setting{"quads too, L2 > 1.5: ranked, every patch (default)", 0, 3, true, 1.5}}) {
         diffuv::Fallback_corner_options o;
         o.estimate_from_faces = s.from;
         o.mapped_candidates = s.mapped;
+        o.patches_with_corners = s.quads;
+        o.min_stretch = s.min_stretch;
         Seg trial = rule;
         const auto t0 = Clock::now();
         const std::size_t set = diffuv::choose_fallback_corners(m, m.points(), trial, o);

@@ -49,6 +49,9 @@ struct Fallback_corner_options {
   /// best `mapped_candidates` are mapped; smaller patches map every candidate.
   std::size_t estimate_from_faces = 2000;
   std::size_t mapped_candidates = 2;  ///< candidates mapped per large patch, best estimates first
+  /// Also the patches that have corners (the layout's quads): their own
+  /// corners are the rule a choice must beat.
+  bool patches_with_corners = false;
 };
 
 namespace internal {
@@ -159,7 +162,8 @@ std::vector<double> estimate_corner_choices(const TriangleMesh& tm, VertexPointM
 
 /// Chooses the four corners of each patch that has none (the layout's
 /// fallback patches, whose sides `region_sides()` would make by merging or
-/// splitting runs of neighbours) by the map they give: among the 4-subsets of
+/// splitting runs of neighbours), and with `patches_with_corners` of the
+/// others too (their own corners then the rule), by the map they give: among the 4-subsets of
 /// a pool of loop vertices (the junctions first, the sharpest first, then the
 /// sharpest other vertices), the one whose map (as the default pipeline makes
 /// it: fast marching and the repair) has the lowest L2 stretch on its
@@ -207,10 +211,14 @@ std::size_t choose_fallback_corners(const TriangleMesh& tm, VertexPointMap vpm, 
 
   // The rule's corners, and the patches they serve badly.
   std::vector<std::size_t> fallback;
+  std::vector<Corners> rule;
   for(std::size_t p = 0; p < n; ++p)
-    if(!seg.corners(p) && !seg.patch_faces[p].empty()) fallback.push_back(p);
+    if((options.patches_with_corners || !seg.corners(p)) && !seg.patch_faces[p].empty()) {
+      fallback.push_back(p);
+      rule.push_back(seg.patch_corners[p]);
+    }
   if(fallback.empty()) return 0;
-  const auto by_rule = score(fallback, std::vector<Corners>(fallback.size(), Segmentation<TriangleMesh>::no_corners()));
+  const auto by_rule = score(fallback, rule);
   std::vector<std::size_t> bad;
   std::vector<double> best, by_rule_score;
   std::vector<Corners> best_corners;
@@ -305,6 +313,20 @@ struct Raw_map_judge_options {
   /// (`whole_patches_to_lay_out()`) the fraction of a patch's vertices that
   /// the repair may move (issue #18's target: 1 %)
   double max_moved = 0.01;
+  /// (`choose_corners()`) how the corners of patches are chosen by their
+  /// maps. By default the layout's quads are tried too, and every patch whose
+  /// map has L2 above 1.5 (not 2): a quad too small to be split again is
+  /// served by corners away from its cell's junctions (man: L2 1.51 -> 1.39).
+  /// So that this costs little, the candidates are ranked by their estimate
+  /// and the best 3 mapped (measured in doc/layout.md, "Corners of the quads").
+  Fallback_corner_options corners = [] {
+    Fallback_corner_options o;
+    o.patches_with_corners = true;
+    o.min_stretch = 1.5;
+    o.estimate_from_faces = 0;
+    o.mapped_candidates = 3;
+    return o;
+  }();
 };
 
 /// Judges a layout by the raw diffusion map of each patch (fast marching, no
@@ -410,7 +432,7 @@ public:
   /// `disc_patches()` last. \returns the number of patches given corners
   std::size_t choose_corners(Segmentation<TriangleMesh>& seg) const
   {
-    Fallback_corner_options o;
+    Fallback_corner_options o = options_.corners;
     o.threads = options_.threads;
     return choose_fallback_corners(*tm_, vpm_, seg, o);
   }
