@@ -244,11 +244,8 @@ inline std::string patching_clause(const diffuv::Patching_report& r, const Patch
       if(l.refined_cells > 0) s += ", " + std::to_string(l.refined_cells) + " refined";
     }
     if(l.fallback_patches > 0) s += ", " + count_text(l.fallback_patches, "other patch", "other patches");
-    // Regions kept whole (a layout read back) have no corners of their own
-    // either, so the search may serve more patches than the other ones.
-    if(r.corners_chosen > 0 && r.corners_chosen <= l.fallback_patches)
-      s += " (" + std::to_string(r.corners_chosen) + " with corners chosen by their maps)";
-    else if(r.corners_chosen > 0)
+    // The search serves quads and regions kept whole too, not only the other patches.
+    if(r.corners_chosen > 0)
       s += ", " + count_text(r.corners_chosen, "patch", "patches") + " with corners chosen by their maps";
     if(r.merged > 0) s += ", " + std::to_string(r.merged) + " merged (fewer than four border vertices)";
     if(r.cut > 0) s += ", " + count_text(r.cut, "region not a disc", "regions not discs") + " (cut into cells)";
