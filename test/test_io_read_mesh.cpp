@@ -5,10 +5,14 @@
 // polygon.
 //
 // Expectations come from the files themselves, parsed here by hand, not
-// from CGAL's readers.
+// from CGAL's readers; except that the one-pass OBJ reader is compared with
+// CGAL's read_OBJ(), whose answers it must give.
 #include "test_data.h"
 
 #include <diffuv/io/read_mesh.h>
+
+#include <CGAL/IO/OBJ.h>
+#include <CGAL/IO/polygon_soup_io.h>
 
 #include <gtest/gtest.h>
 
@@ -18,8 +22,10 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
 #include <limits>
 #include <map>
+#include <random>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -326,6 +332,296 @@ TEST_F(IoReadMesh, ObjWithTexturesAndNegativeIndices)
   EXPECT_EQ(report.faces, 2u);
   const face_descriptor second = *std::next(faces(mesh).begin());
   EXPECT_TRUE(diffuv_test::same_cycle(diffuv_test::face_vertex_numbers(mesh, second), {1, 3, 2}));
+}
+
+// ---------------------------------------------------------------------------
+// OBJ in one pass (issue #20): scan_obj() reads a file as CGAL's read_OBJ()
+// does (the same points, bit for bit, and polygons; the same files refused),
+// and finds the lines and the first problem that the scanner it replaced
+// found, so that no message changes.
+
+// The OBJ scanner that ran before CGAL's reader until issue #20 (getline and
+// istringstream, only to find errors): the reference for lines and messages.
+diffuv::internal::Text_mesh_scan previous_obj_scan(const std::string& content)
+{
+  using diffuv::internal::Text_mesh_scan;
+  Text_mesh_scan scan;
+  std::istringstream file(content);
+  auto fail = [&](std::size_t line, const std::string& what) {
+    scan.error_line = line;
+    scan.error = "not a valid OBJ file (" + what + ")";
+    return scan;
+  };
+  static const char* const ignored[] = {
+    "vt", "vn", "vp", "bevel", "lod", "ctech", "c_interp", "usemap", "usemtl", "stech", "d_interp", "mtllib",
+    "shadow_obj", "trace_obj", "o", "g", "s", "p", "cstype", "deg", "step", "bmat", "con", "curv", "curv2",
+    "surf", "parm", "trim", "hole", "scrv", "sp", "end", "surf_1", "q0_1", "q1_1", "curv2d_1", "surf_2",
+    "q0_2", "q1_2", "curv2d_2", "bsp", "bzp", "cdc", "cdp", "res"};
+  struct Written_face { std::size_t line, vertices_before; std::vector<int> indices; };
+  std::vector<Written_face> written;
+  std::string line;
+  std::size_t number = 0;
+  while(std::getline(file, line)) {
+    ++number;
+    std::istringstream in(line);
+    std::string keyword;
+    if(!(in >> keyword))
+      continue;
+    if(keyword == "v") {
+      scan.vertex_line.push_back(number);
+      double x, y, z;
+      if(!(in >> x >> y >> z)) {
+        std::string stop;
+        diffuv::internal::leading_numbers(line.substr(line.find('v') + 1), stop);
+        if(diffuv::internal::is_non_finite_number(stop)) {
+          scan.error_line = number;
+          scan.error = diffuv::internal::non_finite_message(scan.vertex_line.size() - 1);
+          return scan;
+        }
+        return fail(number, "cannot read the coordinates of vertex " + std::to_string(scan.vertex_line.size() - 1));
+      }
+    } else if(keyword == "f") {
+      scan.face_line.push_back(number);
+      Written_face face{number, scan.vertex_line.size(), {}};
+      int i;
+      while(in >> i) {
+        face.indices.push_back(i);
+        in.ignore(256, ' ');
+      }
+      written.push_back(std::move(face));
+    } else if(keyword.front() == '#' ||
+              std::find(std::begin(ignored), std::end(ignored), keyword) != std::end(ignored)) {
+      continue;
+    } else {
+      return fail(number, "unknown keyword \"" + keyword + "\"");
+    }
+  }
+  const long long nv = static_cast<long long>(scan.vertex_line.size());
+  for(std::size_t j = 0; j < written.size(); ++j)
+    for(int i : written[j].indices) {
+      const long long resolved = i < 1 ? static_cast<long long>(written[j].vertices_before) + i : i - 1LL;
+      if(resolved < 0 || resolved >= nv) {
+        scan.error_line = written[j].line;
+        scan.error = diffuv::internal::out_of_range_message(j, std::to_string(i), scan.vertex_line.size());
+        return scan;
+      }
+    }
+  if(written.empty())
+    scan.error = "the file has no face";
+  return scan;
+}
+
+using Obj_polygons = std::vector<std::vector<std::size_t>>;
+
+// Expects scan_obj() to read `content` as CGAL's reader and the previous
+// scanner do; returns whether CGAL accepts it.
+bool expect_obj_read_as_cgal(const std::string& content, const std::string& what)
+{
+  diffuv::internal::Polygon_soup soup;
+  const diffuv::internal::Text_mesh_scan scan = diffuv::internal::scan_obj(content, soup);
+
+  std::vector<Point_3> points;
+  Obj_polygons polygons;
+  std::istringstream in(content);
+  const bool cgal = CGAL::IO::read_OBJ(in, points, polygons, CGAL::parameters::verbose(false));
+  EXPECT_EQ(soup.complete, cgal) << what;
+  if(cgal && soup.complete) {
+    // Bit for bit: the same double, and the same sign of a zero.
+    std::size_t different = points.size() == soup.points.size() ? 0 : 1;
+    for(std::size_t i = 0; different == 0 && i < points.size(); ++i)
+      for(int c = 0; c < 3; ++c)
+        if(std::memcmp(&soup.points[i][c], &points[i][c], sizeof(double)) != 0)
+          ++different;
+    EXPECT_EQ(different, 0u) << what;
+    EXPECT_TRUE(soup.polygons == polygons) << what;
+  }
+
+  const diffuv::internal::Text_mesh_scan previous = previous_obj_scan(content);
+  EXPECT_EQ(scan.error, previous.error) << what;
+  EXPECT_EQ(scan.error_line, previous.error_line) << what;
+  EXPECT_TRUE(scan.vertex_line == previous.vertex_line) << what;
+  EXPECT_TRUE(scan.face_line == previous.face_line) << what;
+  return cgal;
+}
+
+// A soup written as OBJ in one of four styles: as CGAL writes it; with
+// texture coordinates ("f v/vt", as diffuv writes it); with normals,
+// relative indices, CRLF ends and tabs; with "v/vt/vn", a fourth coordinate
+// and trailing spaces.
+std::string obj_text(const std::vector<Point_3>& points, const Obj_polygons& polygons, int style)
+{
+  std::ostringstream out;
+  out << std::setprecision(17);
+  const char* const end = style == 2 ? "\r\n" : "\n";
+  if(style == 1) out << "mtllib a.mtl" << end;
+  if(style == 2) out << "# written by hand" << end << "g group" << end;
+  for(const Point_3& p : points) {
+    out << "v" << (style == 2 ? "  " : " ") << p.x() << (style == 2 ? "\t" : " ") << p.y() << " " << p.z()
+        << (style == 3 ? " 1.0 " : "") << end;
+    if(style == 1) out << "vt " << p.x() << " " << p.y() << end;
+    if(style == 2) out << "vn 0 0 1" << end;
+  }
+  if(style == 3) out << "s off" << end;
+  const long long nv = static_cast<long long>(points.size());
+  for(const auto& polygon : polygons) {
+    out << "f";
+    for(std::size_t i : polygon) {
+      const long long written = style == 2 ? static_cast<long long>(i) - nv : static_cast<long long>(i) + 1;
+      out << (style == 3 ? "  " : " ") << written;
+      if(style == 1) out << "/" << written;
+      if(style == 2) out << "//1";
+      if(style == 3) out << "/" << written << "/" << written;
+    }
+    out << (style == 3 ? " " : "") << end;
+  }
+  return out.str();
+}
+
+void read_off_soup(const std::string& name, std::vector<Point_3>& points, Obj_polygons& polygons)
+{
+  ASSERT_TRUE(CGAL::IO::read_polygon_soup(diffuv_test::data_path("meshes/" + name), points, polygons,
+                                          CGAL::parameters::verbose(false)))
+    << name;
+}
+
+TEST(IoReadMeshObj, OnePassReadsRealMeshesAsCgal)
+{
+  for(const char* name : {"cow.off", "nefertiti.off", "mushroom.off", "elephant.off", "man.off", "cube_quad.off",
+                          "torus_quad.off", "3torus.off"}) {
+    std::vector<Point_3> points;
+    Obj_polygons polygons;
+    read_off_soup(name, points, polygons);
+    for(int style = 0; style < 4; ++style)
+      EXPECT_TRUE(expect_obj_read_as_cgal(obj_text(points, polygons, style), std::string(name) + " style " +
+                                                                                  std::to_string(style)));
+  }
+}
+
+// The quirks of CGAL's reader (libstdc++'s streams), one by one.
+TEST(IoReadMeshObj, OnePassKeepsCgalsQuirks)
+{
+  const std::string tri = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+  const std::vector<std::string> contents = {
+    "f\n", "f 1 2 3\n", "f -1\n", tri, tri + "f 1 2 3", "\n\n\n", "   \n\t\n", tri + "\r",
+    "v 0 0 0\nf -2 1 1\nv 1 0 0\nv 0 1 0\n",        // before the first vertex, yet within CGAL's bound
+    tri + "f 1 2 0\n", "v 0 0 0\nv 1 0 0\nf 1 2 0\nv 0 1 0\n", tri + "f 1 2 4\n", tri + "f 1 2 5\n",
+    tri + "f -4 1 2\n", tri + "f\nf 1 2 3\n",
+    // numbers: >> double
+    "v 1e-310 0 0\n" + tri + "f 1 2 3\n", "v 1e-400 -1e-400 -0\n" + tri + "f 1 2 3\n",
+    "v 4.9406564584124654e-324 2.4703282292062328e-324 2.4703282292062327e-324\n" + tri + "f 2 3 4\n",
+    "v 1e309 0 0\n" + tri + "f 2 3 4\n", "v 1.7976931348623157e308 1.7976931348623158e308 0\n" + tri + "f 2 3 4\n",
+    "v 0.1000000000000000055511151231257827021181583404541015625 0." + std::string(800, '1') + " 1" +
+      std::string(400, '0') + "e-400\n" + tri + "f 2 3 4\n",
+    "v +1 +0.5 +.5e+1\n" + tri + "f +2 +3 +4\n", "v 1-2-3\n" + tri + "f 2 3 4\n", "v 1.5.3e1e2\n" + tri + "f 2 3 4\n",
+    "v 1e+ 2 3\n" + tri, "v 0x1p3 0 0\n" + tri, "v . 0 0\n" + tri, "v -.5 -.e 0\n" + tri, "v e5 0 0\n" + tri,
+    "v 000.5 -00 0000\n" + tri + "f 002 003 004\n", "v inf 0 0\n" + tri, "v 0 0 nan\n" + tri,
+    "v 0 0 0 nan\n" + tri + "f 2 3 4\n", "v 0 0 1e999#\n" + tri, "v 0 0 #0\n" + tri, "v 0 0 0#c\n" + tri + "f 2 3 4\n",
+    "v 1,5 0 0\n" + tri, "v 1e5x 0 0\n" + tri,
+    // indices: >> int, then ignore(256, ' ')
+    tri + "f 1\t2\t3\n", tri + "f 1.9 2.9 3.9\n", tri + "f 1e2 2 3\n", tri + "f /1 2 3\n",
+    tri + "f 1/" + std::string(254, '9') + " 2 3\n", tri + "f 1/" + std::string(255, '9') + " 2 3\n",
+    tri + "f 1" + std::string(256, '/') + "2 3\n", tri + "f 1/" + std::string(254, '/') + "2 3\n",
+    tri + "f 1" + std::string(255, 'x') + "2 3 1\n", tri + "f 1" + std::string(256, 'x') + "2 3 1\n",
+    tri + "f 1" + std::string(257, 'x') + "2 3 1\n", tri + "f 1 2 3 99999999999\n", tri + "f 1 2 2147483647\n",
+    tri + "f 1 2 -2147483648\n", tri + "f 1 2 -2147483649\n", tri + "f 1//2 2//2 3//2\n",
+    // lines and keywords
+    "v 0 0 0\r\nv 1 0 0\r\nv 0 1 0\r\nf 1 2 3\r\n", "v 0 0 0\rv 1 0 0\rv 0 1 0\rf 1 2 3\r",
+    "v\v0\f0\r0\nv 1 0 0\nv 0 1 0\nf\v1 2 3\n", std::string("v 0 0 0\nv 1 0 0\0\nv 0 1 0\nf 1 2 3\n", 33),
+    std::string("v 0 0 0\nv 1 0 0\n\0v 0 1 0\nf 1 2 3\n", 33), "v 0 0 0\nv 1 0 0\n#v 0 1 0\nv 0 1 0\n#\nf 1 2 3 # c\n",
+    "\xef\xbb\xbfv 0 0 0\n" + tri, tri + "l 1 2\nf 1 2 3\n", tri + "vp 1 2\ncurv 0 1\nusemtl m\nf 1 2 3\n",
+    "v1 0 0 0\n", "V 0 0 0\n", "F 1 2 3\n"};
+  std::size_t accepted = 0;
+  for(std::size_t k = 0; k < contents.size(); ++k)
+    accepted += expect_obj_read_as_cgal(contents[k], "case " + std::to_string(k)) ? 1 : 0;
+  EXPECT_GT(accepted, 20u);
+}
+
+// OBJ copies of small meshes in the four styles, damaged one to four times:
+// words replaced (by numbers at the edges of what the streams read, keywords,
+// long words), lines added, removed, repeated or swapped, characters changed,
+// spaces turned into tabs, indices near the number of vertices, the file cut
+// short, CRLF line ends.
+TEST(IoReadMeshObj, OnePassAnswersAsCgalOnMutatedFiles)
+{
+  std::vector<std::string> bases;
+  for(const char* name : {"tetrahedron.off", "cube_quad.off", "octahedron.off", "icosahedron.off", "star.off",
+                          "hole.off", "tripod.off", "patch-23.off"}) {
+    std::vector<Point_3> points;
+    Obj_polygons polygons;
+    read_off_soup(name, points, polygons);
+    for(int style = 0; style < 4; ++style) bases.push_back(obj_text(points, polygons, style));
+  }
+  const std::vector<std::string> words = {
+    "inf", "-inf", "nan", "1e999", "-1e999", "1e-400", "4.9e-324", "2e-310", "0x1p3", "+1", "-0", "0", "-1", "-3",
+    "1-2", "1.5.3", "1e", "1e+", "e5", ".", "-", ".5", "5.", "1e5x", "99999999999", "2147483647", "2147483648",
+    "-2147483649", "abc", "#", "v", "f", "vt", "vn", "o", "g", "usemtl", "xyz", "1/2/3", "1//3", "/", "\t", "\r",
+    std::string(1, '\0'), "\v", std::string(300, 'x'), "1/" + std::string(300, '2'), "7" + std::string(255, '/') + " 9",
+    "1e308", "1.8e308", "+-1", "1E5", "00012", "+.5", "1,5", "\xff", "1 2", "#c"};
+  const std::vector<std::string> lines = {
+    "f 1 2 3", "f -1 -2 -3", "f 0 1 2", "v 1 2", "v 1 2 3 4", "", "   ", "#x", "vt 0 0", "\r", "f", "f 1",
+    "f 1\t2\t3", "mtllib a", "g", "v 0 0 0", "v inf 0 0", "v 1e999 0 0", "f 1/1/1 2/2/2 3/3/3", "f 1 1 2", "v",
+    "vp 1 2", "l 1 2", "f -4 -5 -6"};
+  std::mt19937 random(20261204);
+  auto pick = [&](std::size_t n) { return static_cast<std::size_t>(random() % n); };
+  std::size_t accepted = 0, trials = 6000;
+  for(std::size_t trial = 0; trial < trials; ++trial) {
+    std::vector<std::string> text;
+    {
+      std::istringstream in(bases[pick(bases.size())]);
+      for(std::string line; std::getline(in, line);) text.push_back(line);
+    }
+    bool cut = false;
+    std::string content;
+    for(std::size_t damage = 1 + pick(4); damage > 0 && !text.empty(); --damage) {
+      std::string& line = text[pick(text.size())];
+      switch(pick(11)) {
+        case 0: case 1: { // a word replaced
+          std::size_t start = 0;
+          for(std::size_t w = pick(5); w > 0 && line.find(' ', start) != std::string::npos; --w)
+            start = line.find(' ', start) + 1;
+          const std::size_t stop = std::min(line.find(' ', start), line.size());
+          line.replace(start, stop - start, words[pick(words.size())]);
+          break;
+        }
+        case 2:
+          text.insert(text.begin() + static_cast<std::ptrdiff_t>(pick(text.size() + 1)), lines[pick(lines.size())]);
+          break;
+        case 3: text.erase(text.begin() + static_cast<std::ptrdiff_t>(pick(text.size()))); break;
+        case 4: text.push_back(text[pick(text.size())]); break;
+        case 5: std::swap(line, text[pick(text.size())]); break;
+        case 6: { // a character inserted, removed or replaced
+          const std::size_t at = pick(line.size() + 1);
+          const char c = static_cast<char>(pick(2) ? pick(256) : " \t\r/-+.e0123456789#"[pick(19)]);
+          if(pick(2) || at == line.size()) line.insert(at, 1, c);
+          else line[at] = c;
+          break;
+        }
+        case 7: std::replace(line.begin(), line.end(), ' ', '\t'); break;
+        case 8: { // an index near the number of vertices
+          const long long nv =
+            std::count_if(text.begin(), text.end(), [](const std::string& l) { return l.rfind("v ", 0) == 0; });
+          const long long near[] = {nv, nv + 1, nv + 2, -nv, -nv - 1, 0, -1};
+          if(line.rfind("f ", 0) == 0) { // its first index
+            const std::size_t stop = std::min(line.find(' ', 2), line.size());
+            line.replace(2, stop - 2, std::to_string(near[pick(7)]));
+          }
+          break;
+        }
+        case 9: for(std::string& l : text) l += "\r"; break;
+        default: cut = true; break;
+      }
+    }
+    for(const std::string& line : text) content += line + "\n";
+    if(cut) content.resize(pick(content.size() + 1));
+    accepted += expect_obj_read_as_cgal(content, "trial " + std::to_string(trial)) ? 1 : 0;
+    if(::testing::Test::HasFailure()) {
+      ADD_FAILURE() << "first difference on:\n" << content;
+      break;
+    }
+  }
+  // Both answers occur often enough for the comparison to mean something.
+  EXPECT_GT(accepted, trials / 10);
+  EXPECT_LT(accepted, trials - trials / 10);
 }
 
 // ---------------------------------------------------------------------------

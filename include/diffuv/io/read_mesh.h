@@ -13,9 +13,10 @@
 // mesh (vertex 0 is the first vertex of the file); only a vertex index that
 // is out of range is quoted as written in the file (from 1 in OBJ).
 //
-// The pieces are in io/internal/: the OFF, OBJ and PLY scanners (lines and
-// what CGAL's readers trust, checked before they read), the checks of the
-// polygon soup, and its triangulation.
+// The pieces are in io/internal/: the OFF and OBJ readers (one pass that
+// reads the soup as CGAL's readers would and finds the lines), the PLY
+// scanner (what CGAL's reader trusts, checked before it reads), the checks
+// of the polygon soup, and its triangulation.
 #ifndef DIFFUV_IO_READ_MESH_H
 #define DIFFUV_IO_READ_MESH_H
 
@@ -28,7 +29,6 @@
 #include <diffuv/io/internal/polygon_soup_checks.h>
 #include <diffuv/io/internal/triangulate_polygons.h>
 
-#include <CGAL/IO/OBJ.h>
 #include <CGAL/IO/PLY.h>
 #include <CGAL/IO/STL.h>
 #include <CGAL/Polygon_mesh_processing/shape_predicates.h>
@@ -105,7 +105,8 @@ inline const char* format_name(Mesh_format format)
 /// Reads a polygon mesh file (OFF, OBJ, PLY or STL, by extension, in any
 /// case) into a triangle mesh whose vertex i is the i-th point of the file.
 ///
-/// The file is read as a polygon soup with CGAL's readers and checked
+/// The file is read as a polygon soup (OFF and OBJ by diffuv's readers,
+/// which give what CGAL's readers give; PLY and STL by CGAL's) and checked
 /// before the mesh is built: at least one face; finite coordinates; faces of
 /// at least three vertex indices, in range and distinct; a manifold,
 /// consistently oriented polygon mesh. Nothing is repaired, merged or
@@ -176,28 +177,28 @@ Mesh_read_report read_triangle_mesh(const std::string& path, TriangleMesh& mesh)
   if(file_size == 0)
     throw Input_error(path, 0, "the file is empty");
 
-  // OFF is read in one pass of diffuv's own scanner, which gives the soup
-  // and the lines of its elements; the other formats are read with CGAL's
-  // readers after their scanners checked what those readers take on trust.
+  // OFF and OBJ are read in one pass of diffuv's own scanners, which give
+  // the soup and the lines of its elements; PLY and STL are read with CGAL's
+  // readers, PLY after its scanner checked what that reader takes on trust.
   internal::Polygon_soup soup;
-  internal::Text_mesh_scan off_scan;
-  if(format == Mesh_format::off) {
+  internal::Text_mesh_scan text_scan;
+  if(format == Mesh_format::off || format == Mesh_format::obj) {
     internal::File_bytes bytes;
     if(!bytes.open(path))
       throw Input_error(path, 0, "cannot open file");
-    off_scan = internal::scan_off(bytes.view(), false, &soup);
-    if(!off_scan.error.empty())
-      throw Input_error(path, off_scan.error_line, off_scan.error);
+    if(format == Mesh_format::off) {
+      text_scan = internal::scan_off(bytes.view(), false, &soup);
+      if(!text_scan.error.empty())
+        throw Input_error(path, text_scan.error_line, text_scan.error);
+    } else {
+      // An OBJ file CGAL accepts may still have an index out of range, which
+      // the checks below report in file order with the other problems.
+      text_scan = internal::scan_obj(bytes.view(), soup);
+    }
   }
 
   // The lines of elements, for messages: only the text formats have them.
-  internal::Line_locator locate([&]() -> internal::Text_mesh_scan {
-    if(format == Mesh_format::off)
-      return std::move(off_scan);
-    if(format == Mesh_format::obj)
-      return internal::scan_obj(path);
-    return internal::Text_mesh_scan();
-  });
+  internal::Line_locator locate([&]() -> internal::Text_mesh_scan { return std::move(text_scan); });
   if(format == Mesh_format::ply) {
     const internal::Text_mesh_scan checked = internal::scan_ply(path, file_size);
     if(!checked.error.empty())
@@ -212,12 +213,12 @@ Mesh_read_report read_triangle_mesh(const std::string& path, TriangleMesh& mesh)
     const auto np = CGAL::parameters::verbose(false);
     switch(format) {
       case Mesh_format::off:
+      case Mesh_format::obj:
         read = soup.complete;
         points.reserve(soup.points.size());
         for(const auto& p : soup.points) points.emplace_back(p[0], p[1], p[2]);
         polygons = std::move(soup.polygons);
         break;
-      case Mesh_format::obj: read = CGAL::IO::read_OBJ(path, points, polygons, np); break;
       case Mesh_format::ply: read = CGAL::IO::read_PLY(path, points, polygons, np); break;
       case Mesh_format::stl: read = CGAL::IO::read_STL(path, points, polygons, np); break;
     }

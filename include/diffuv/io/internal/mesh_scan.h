@@ -5,6 +5,7 @@
 
 #include <diffuv/internal/message_text.h>
 
+#include <array>
 #include <cstddef>
 #include <functional>
 #include <limits>
@@ -17,14 +18,21 @@ namespace internal {
 
 /// Where the vertices and faces of a text mesh file are, and the first
 /// problem met when reading it the way CGAL reads it. CGAL's readers answer
-/// only true or false; this second, line-counting pass turns a `false` into
-/// a line and a reason, and gives the line of an element named in a later
-/// check. Lines count from 1; 0 means unknown.
+/// only true or false; the scan turns a `false` into a line and a reason,
+/// and gives the line of an element named in a later check (the OFF and OBJ
+/// readers fill it as they read). Lines count from 1; 0 means unknown.
 struct Text_mesh_scan {
   std::vector<std::size_t> vertex_line;
   std::vector<std::size_t> face_line;
   std::size_t error_line = 0;
   std::string error; ///< empty if no problem was found
+};
+
+/// The points and polygons of a mesh file, as read.
+struct Polygon_soup {
+  std::vector<std::array<double, 3>> points;
+  std::vector<std::vector<std::size_t>> polygons;
+  bool complete = false; ///< false: the file ended or broke off before all were read, or CGAL's reader would refuse it
 };
 
 /// The lines of a file's elements, scanned on first use: only error

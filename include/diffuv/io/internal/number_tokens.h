@@ -5,7 +5,9 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstddef>
 #include <cstdlib>
+#include <limits>
 #include <sstream>
 #include <string>
 #include <string_view>
@@ -43,6 +45,94 @@ inline bool parse_number(std::string_view token, double& value)
   char* end = nullptr;
   value = std::strtod(text.c_str(), &end);
   return !text.empty() && end == text.c_str() + text.size();
+}
+
+/// Reads a number from `at` as `std::istream >> double` reads it (libstdc++'s
+/// `num_get`, C locale), for readers that copy a stream-based reader without
+/// its stream: white space skipped, then the longest prefix of the form
+/// [+-]digits[.digits][(e|E)[+-]digits] taken ("1-2" is 1, then -2), which
+/// must convert whole; a value beyond the range of a double fails, one too
+/// small gives 0 or a subnormal. Moves `at` past what the stream consumes.
+inline bool extract_double(const char*& at, const char* end, double& value)
+{
+  const char* p = at;
+  while(p < end && is_blank(*p))
+    ++p;
+  const char* const start = p;
+  if(p < end && (*p == '+' || *p == '-'))
+    ++p;
+  bool digits = false, point = false, exponent = false;
+  for(; p < end; ++p) {
+    const char c = *p;
+    if(c >= '0' && c <= '9') {
+      digits = true;
+    } else if(c == '.' && !point && !exponent) {
+      point = true;
+    } else if((c == 'e' || c == 'E') && digits && !exponent) {
+      exponent = true;
+      if(p + 1 < end && (p[1] == '+' || p[1] == '-'))
+        ++p; // the exponent's sign
+    } else {
+      break;
+    }
+  }
+  at = p;
+  // from_chars reads the same syntax as strtod here, apart from a leading '+'.
+  const char* const first = start < p && *start == '+' ? start + 1 : start;
+  const auto [stop, ec] = std::from_chars(first, p, value);
+  if(stop != p || first == p)
+    return false;
+  if(ec == std::errc())
+    return true;
+  if(ec != std::errc::result_out_of_range)
+    return false;
+  // Too large or too small for from_chars: the stream keeps strtod's 0 or
+  // subnormal, and fails on an infinity.
+  const std::string text(start, p);
+  value = std::strtod(text.c_str(), nullptr);
+  return std::isfinite(value);
+}
+
+/// Reads an integer from `at` as `std::istream >> int` reads it (libstdc++,
+/// C locale): white space skipped, an optional sign, decimal digits; fails
+/// without digits or beyond the range of an int. Moves `at` past what the
+/// stream consumes.
+inline bool extract_int(const char*& at, const char* end, int& value)
+{
+  const char* p = at;
+  while(p < end && is_blank(*p))
+    ++p;
+  bool negative = false;
+  if(p < end && (*p == '+' || *p == '-'))
+    negative = *p++ == '-';
+  const char* const digits = p;
+  long long magnitude = 0;
+  for(; p < end && *p >= '0' && *p <= '9'; ++p)
+    if(magnitude <= std::numeric_limits<int>::max())
+      magnitude = magnitude * 10 + (*p - '0'); // past int's range the value no longer matters
+  at = p;
+  if(p == digits)
+    return false;
+  const long long signed_value = negative ? -magnitude : magnitude;
+  if(signed_value < std::numeric_limits<int>::min() || signed_value > std::numeric_limits<int>::max())
+    return false;
+  value = static_cast<int>(signed_value);
+  return true;
+}
+
+/// Moves `at` as `std::istream::ignore(256, ' ')` does (libstdc++): past up
+/// to 256 characters that are not a space, then past the space that stopped
+/// it, if one did.
+inline void ignore_to_space(const char*& at, const char* end)
+{
+  const std::size_t most = 256;
+  std::size_t skipped = 0;
+  while(at < end && *at != ' ' && skipped < most) {
+    ++at;
+    ++skipped;
+  }
+  if(at < end && skipped < most)
+    ++at;
 }
 
 /// `line` up to a `#` comment.

@@ -1,5 +1,6 @@
-// diffuv: the OBJ scanner. CGAL's OBJ reader answers true or false; this
-// pass reads the file line by line as it does, to say where and why.
+// diffuv: the OBJ reader. One pass over the file's bytes reads the points and
+// polygons exactly as CGAL's `read_OBJ()` (CGAL 5.5) reads them, and says
+// where and why a file is bad, so that CGAL's reader is not called (issue #20).
 #ifndef DIFFUV_IO_INTERNAL_OBJ_SCANNER_H
 #define DIFFUV_IO_INTERNAL_OBJ_SCANNER_H
 
@@ -7,93 +8,178 @@
 #include <diffuv/io/internal/number_tokens.h>
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
-#include <fstream>
+#include <cstring>
 #include <iterator>
-#include <sstream>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
 namespace diffuv {
 namespace internal {
 
-/// Scans an OBJ file line by line like CGAL's OBJ reader.
-inline Text_mesh_scan scan_obj(const std::string& path)
+/// The first word of an OBJ line, as `std::istringstream >> std::string`
+/// reads it; moves `at` past it. Empty if the line holds only white space.
+inline std::string_view obj_keyword(const char*& at, const char* end)
+{
+  while(at < end && is_blank(*at))
+    ++at;
+  const char* const first = at;
+  while(at < end && !is_blank(*at))
+    ++at;
+  return std::string_view(first, static_cast<std::size_t>(at - first));
+}
+
+/// True if CGAL's OBJ reader skips lines of `keyword` without an error:
+/// comments, texture coordinates, normals, and statements it does not read.
+inline bool obj_keyword_ignored(std::string_view keyword)
+{
+  static const char* const ignored[] = {
+    "vt", "vn", "vp", "bevel", "lod", "ctech", "c_interp", "usemap", "usemtl", "stech", "d_interp", "mtllib",
+    "shadow_obj", "trace_obj", "o", "g", "s", "p", "cstype", "deg", "step", "bmat", "con", "curv", "curv2",
+    "surf", "parm", "trim", "hole", "scrv", "sp", "end", "surf_1", "q0_1", "q1_1", "curv2d_1", "surf_2",
+    "q0_2", "q1_2", "curv2d_2", "bsp", "bzp", "cdc", "cdp", "res"};
+  return keyword.front() == '#' ||
+         std::find(std::begin(ignored), std::end(ignored), keyword) != std::end(ignored);
+}
+
+/// The vertex indices of a face line after its "f", as written, read as
+/// CGAL reads them: `>> int` then `ignore(256, ' ')`, which keeps the v of
+/// "v/vt/vn" and stops at the first word that does not start with an integer.
+inline void obj_written_indices(const char* at, const char* end, std::vector<int>& written)
+{
+  written.clear();
+  int index = 0;
+  while(extract_int(at, end, index)) {
+    written.push_back(index);
+    ignore_to_space(at, end);
+  }
+}
+
+/// The index that corner `corner` of the face on line `line` is written with.
+inline int obj_index_as_written(std::string_view text, std::size_t line, std::size_t corner)
+{
+  std::size_t at = 0;
+  for(std::size_t l = 1; l < line; ++l)
+    at = text.find('\n', at) + 1;
+  const std::size_t end = std::min(text.find('\n', at), text.size());
+  const char* p = text.data() + at;
+  obj_keyword(p, text.data() + end); // "f"
+  std::vector<int> written;
+  obj_written_indices(p, text.data() + end, written);
+  return written.at(corner);
+}
+
+/// Reads the OBJ file `text` in one pass, as CGAL's `read_OBJ()` reads it
+/// with `std::getline` and `std::istringstream`: a line per element, a
+/// vertex as three numbers read with `>> double` (more are ignored), a face
+/// as the integers `>> int` reads (1 is the first vertex, 0 and below count
+/// back from the last vertex read so far), the keywords in
+/// `obj_keyword_ignored()` skipped and any other refused. Fills `soup` with
+/// what CGAL would give; `soup.complete` is whether CGAL would accept the
+/// file. The scan gives the line of each element and the first problem: a
+/// vertex or keyword CGAL stops at, else the first index out of range (quoted
+/// as written), else a file without faces.
+inline Text_mesh_scan scan_obj(std::string_view text, Polygon_soup& soup)
 {
   Text_mesh_scan scan;
-  std::ifstream file(path);
+  soup = Polygon_soup();
   auto fail = [&](std::size_t line, const std::string& what) {
     scan.error_line = line;
     scan.error = "not a valid OBJ file (" + what + ")";
     return scan;
   };
 
-  // The keywords CGAL's reader skips without an error.
-  static const char* const ignored[] = {
-    "vt", "vn", "vp", "bevel", "lod", "ctech", "c_interp", "usemap", "usemtl", "stech", "d_interp", "mtllib",
-    "shadow_obj", "trace_obj", "o", "g", "s", "p", "cstype", "deg", "step", "bmat", "con", "curv", "curv2",
-    "surf", "parm", "trim", "hole", "scrv", "sp", "end", "surf_1", "q0_1", "q1_1", "curv2d_1", "surf_2",
-    "q0_2", "q1_2", "curv2d_2", "bsp", "bzp", "cdc", "cdp", "res"};
+  int smallest_written = 1, largest_positive = -1; // the bounds CGAL checks at the end
+  long long smallest_resolved = 0, largest_resolved = -1; // whether any index is out of range
+  std::vector<int> written;
+  std::size_t line_number = 0;
+  const char* const text_end = text.data() + text.size();
 
-  struct Written_face { std::size_t line, vertices_before; std::vector<int> indices; };
-  std::vector<Written_face> written;
+  // Room for an element on every line, so that the arrays never grow: growing
+  // copies them into fresh memory, whose pages are what a large read costs
+  // (the pages reserved and never written cost nothing).
+  std::size_t lines = 1;
+  for(const char* p = text.data(); (p = static_cast<const char*>(std::memchr(p, '\n', static_cast<std::size_t>(text_end - p))));
+      ++p)
+    ++lines;
+  soup.points.reserve(lines);
+  soup.polygons.reserve(lines);
+  scan.vertex_line.reserve(lines);
+  scan.face_line.reserve(lines);
+  for(const char* next = text.data(); next < text_end;) {
+    const char* at = next;
+    const char* line_end = static_cast<const char*>(std::memchr(at, '\n', static_cast<std::size_t>(text_end - at)));
+    if(!line_end)
+      line_end = text_end;
+    next = line_end + 1;
+    ++line_number;
 
-  std::string line;
-  std::size_t number = 0;
-  while(std::getline(file, line)) {
-    ++number;
-    std::istringstream in(line);
-    std::string keyword;
-    if(!(in >> keyword))
+    const std::string_view keyword = obj_keyword(at, line_end);
+    if(keyword.empty())
       continue;
     if(keyword == "v") {
-      scan.vertex_line.push_back(number);
-      double x, y, z;
-      if(!(in >> x >> y >> z)) {
+      scan.vertex_line.push_back(line_number);
+      std::array<double, 3> point;
+      if(!extract_double(at, line_end, point[0]) || !extract_double(at, line_end, point[1]) ||
+         !extract_double(at, line_end, point[2])) {
+        // The numbers as the messages describe them: a number too large
+        // or "inf" is a value to name, not a syntax error.
+        const std::string line(keyword.data(), static_cast<std::size_t>(line_end - keyword.data()));
         std::string stop;
-        leading_numbers(line.substr(line.find('v') + 1), stop);
+        leading_numbers(line.substr(1), stop);
         if(is_non_finite_number(stop)) {
-          scan.error_line = number;
+          scan.error_line = line_number;
           scan.error = non_finite_message(scan.vertex_line.size() - 1);
           return scan;
         }
-        return fail(number, "cannot read the coordinates of vertex " + std::to_string(scan.vertex_line.size() - 1));
+        return fail(line_number, "cannot read the coordinates of vertex " + std::to_string(scan.vertex_line.size() - 1));
       }
+      soup.points.push_back(point);
     } else if(keyword == "f") {
-      scan.face_line.push_back(number);
-      Written_face face{number, scan.vertex_line.size(), {}};
-      int i;
-      while(in >> i) {
-        face.indices.push_back(i);
-        in.ignore(256, ' '); // "v/vt/vn": CGAL keeps v and skips to the next space
+      scan.face_line.push_back(line_number);
+      obj_written_indices(at, line_end, written);
+      const int vertices_before = static_cast<int>(soup.points.size());
+      std::vector<std::size_t> polygon(written.size());
+      for(std::size_t c = 0; c < written.size(); ++c) {
+        const int i = written[c];
+        // As CGAL stores it: an int, converted (a negative one to a huge index).
+        const int resolved = i < 1 ? vertices_before + i : i - 1;
+        polygon[c] = static_cast<std::size_t>(resolved);
+        if(i < 1)
+          smallest_written = std::min(smallest_written, i);
+        else
+          largest_positive = std::max(largest_positive, resolved);
+        smallest_resolved = std::min<long long>(smallest_resolved, resolved);
+        largest_resolved = std::max<long long>(largest_resolved, resolved);
       }
-      written.push_back(std::move(face));
-    } else if(keyword.front() == '#' ||
-              std::find(std::begin(ignored), std::end(ignored), keyword) != std::end(ignored)) {
-      continue;
-    } else {
-      return fail(number, "unknown keyword \"" + keyword + "\"");
+      soup.polygons.push_back(std::move(polygon));
+    } else if(!obj_keyword_ignored(keyword)) {
+      return fail(line_number, "unknown keyword \"" + std::string(keyword) + "\"");
     }
   }
 
-  // Positive indices count from 1, negative ones back from the last vertex
-  // read so far.
-  const long long nv = static_cast<long long>(scan.vertex_line.size());
-  for(std::size_t j = 0; j < written.size(); ++j) {
-    for(int i : written[j].indices) {
-      const long long resolved = i < 1 ? static_cast<long long>(written[j].vertices_before) + i : i - 1LL;
-      if(resolved < 0 || resolved >= nv) {
-        scan.error_line = written[j].line;
-        scan.error = out_of_range_message(j, std::to_string(i), scan.vertex_line.size());
-        return scan;
+  // CGAL refuses a file without points or faces, and indices beyond its
+  // bounds; these let through the index one past the last vertex, and a
+  // relative index that points before the first vertex read so far.
+  const int nv = static_cast<int>(soup.points.size());
+  soup.complete = nv > 0 && !soup.polygons.empty() && largest_positive <= nv && smallest_written >= -nv;
+
+  const bool out_of_range = smallest_resolved < 0 || largest_resolved >= nv;
+  for(std::size_t j = 0; out_of_range && j < soup.polygons.size() && scan.error.empty(); ++j) {
+    const std::vector<std::size_t>& polygon = soup.polygons[j];
+    for(std::size_t c = 0; c < polygon.size(); ++c)
+      if(polygon[c] >= soup.points.size()) {
+        scan.error_line = scan.face_line[j];
+        scan.error = out_of_range_message(j, std::to_string(obj_index_as_written(text, scan.error_line, c)),
+                                          soup.points.size());
+        break;
       }
-    }
   }
-  if(written.empty()) {
+  if(soup.polygons.empty())
     scan.error = "the file has no face";
-    return scan;
-  }
   return scan;
 }
 

@@ -12,7 +12,6 @@
 
 #include <CGAL/IO/io.h>
 
-#include <array>
 #include <cctype>
 #include <cmath>
 #include <cstddef>
@@ -197,13 +196,6 @@ inline bool edge_count_fits(long long edges)
 {
   return edges >= std::numeric_limits<int>::min() / 2 && edges <= std::numeric_limits<int>::max() / 2;
 }
-
-/// The points and polygons of a mesh file, as read.
-struct Polygon_soup {
-  std::vector<std::array<double, 3>> points;
-  std::vector<std::vector<std::size_t>> polygons;
-  bool complete = false; ///< false: the file ended or broke off before all were read
-};
 
 /// Reads and checks an OFF file like CGAL's `File_scanner_OFF`: header, then
 /// one vertex per line, then one face per line, giving the lines of the
