@@ -307,6 +307,8 @@ TEST_F(IoReadMesh, ObjErrorsHaveALine)
     {"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 3 2 9\n", 5, "face 1 has vertex index 9, out of range (the file has 3 vertices)"},
     {"v 0 0 0\nv 1 0 0\nf 1 2 -3\nv 0 1 0\n", 3, "face 0 has vertex index -3, out of range (the file has 3 vertices)"},
     {"v 0 0 0\nv 1 0 0\nv 0 1 0\nxyz 1\nf 1 2 3\n", 4, "not a valid OBJ file (unknown keyword \"xyz\")"},
+    // Binary junk is quoted escaped, not written to the terminal.
+    {"v 0 0 0\n\x01\xff\x1b[2J 1\n", 2, "not a valid OBJ file (unknown keyword \"\\x01\\xff\\x1b[2J\")"},
     {"v 0 0 0\nv 1 0\nv 0 1 0\nf 1 2 3\n", 2, "not a valid OBJ file (cannot read the coordinates of vertex 1)"},
     {"# comment\nv 0 0 0\nv 1 0 0\nv 0 inf 0\nf 1 2 3\n", 4, "vertex 2 has a coordinate that is NaN or infinite"},
     {"v 0 0 0\nv 1 0 0\nv 0 1 0\n", 0, "the file has no face"},
@@ -393,7 +395,7 @@ diffuv::internal::Text_mesh_scan previous_obj_scan(const std::string& content)
               std::find(std::begin(ignored), std::end(ignored), keyword) != std::end(ignored)) {
       continue;
     } else {
-      return fail(number, "unknown keyword \"" + keyword + "\"");
+      return fail(number, "unknown keyword \"" + diffuv::internal::printable(keyword) + "\"");
     }
   }
   const long long nv = static_cast<long long>(scan.vertex_line.size());

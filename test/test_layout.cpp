@@ -345,19 +345,7 @@ TEST(QuadLayout, FallbackCornersChosenByTheirMapsServeThemBetter)
   ASSERT_EQ(chosen.number_of_patches(), rule.number_of_patches());
   EXPECT_EQ(chosen.face_patch, rule.face_patch);
 
-  auto map_all = [&](const Seg& seg) {
-    diffuv::Uv_atlas<Mesh> atlas(cow);
-    const auto results = diffuv::parameterize_patches(cow, cow.points(), seg, atlas);
-    std::vector<diffuv::Distortion_summary> d(results.size());
-    for(std::size_t p = 0; p < results.size(); ++p) {
-      EXPECT_TRUE(results[p].status.ok()) << p;
-      if(results[p].status.ok())
-        d[p] = diffuv::measure_distortion(cow, cow.points(), atlas.chart(results[p].chart).faces,
-                                          atlas.chart_texture_map(results[p].chart));
-    }
-    return d;
-  };
-  const auto before = map_all(rule), after = map_all(chosen);
+  const auto before = map_each_patch(cow, rule), after = map_each_patch(cow, chosen);
   std::size_t changed = 0;
   diffuv::Distortion_summary total_before, total_after;
   for(std::size_t p = 0; p < rule.number_of_patches(); ++p) {
@@ -408,19 +396,7 @@ TEST(QuadLayout, QuadCornersChosenByTheirMapsServeThemBetter)
   const std::size_t set = diffuv::choose_fallback_corners(cow, cow.points(), chosen, diffuv::Raw_map_judge_options().corners);
   EXPECT_EQ(chosen.face_patch, rule.face_patch);
 
-  auto map_all = [&](const Seg& seg) {
-    diffuv::Uv_atlas<Mesh> atlas(cow);
-    const auto results = diffuv::parameterize_patches(cow, cow.points(), seg, atlas);
-    std::vector<diffuv::Distortion_summary> d(results.size());
-    for(std::size_t p = 0; p < results.size(); ++p) {
-      EXPECT_TRUE(results[p].status.ok()) << p;
-      if(results[p].status.ok())
-        d[p] = diffuv::measure_distortion(cow, cow.points(), atlas.chart(results[p].chart).faces,
-                                          atlas.chart_texture_map(results[p].chart));
-    }
-    return d;
-  };
-  const auto before = map_all(rule), after = map_all(chosen);
+  const auto before = map_each_patch(cow, rule), after = map_each_patch(cow, chosen);
   std::size_t quads_changed = 0, changed = 0;
   diffuv::Distortion_summary total_before, total_after;
   for(std::size_t p = 0; p < rule.number_of_patches(); ++p) {

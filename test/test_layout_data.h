@@ -111,6 +111,21 @@ Seg automatic_layout(const Mesh& m, diffuv::Patching_report* report = nullptr)
   return seg;
 }
 
+// Each patch of `seg` mapped by the default pipeline and measured on its
+// chart (an empty summary where the patch could not be mapped, which fails).
+std::vector<diffuv::Distortion_summary> map_each_patch(const Mesh& m, const Seg& seg)
+{
+  diffuv::Uv_atlas<Mesh> atlas(m);
+  const auto results = diffuv::parameterize_patches(m, m.points(), seg, atlas);
+  std::vector<diffuv::Distortion_summary> d(results.size());
+  for(std::size_t p = 0; p < results.size(); ++p) {
+    EXPECT_TRUE(results[p].status.ok()) << p;
+    if(results[p].status.ok())
+      d[p] = diffuv::measure_distortion(m, m.points(), atlas.chart(results[p].chart).faces, atlas.chart_texture_map(results[p].chart));
+  }
+  return d;
+}
+
 double height(const Mesh& m, face_descriptor f, int axis)
 {
   double sum = 0;

@@ -78,8 +78,10 @@ inline CLI::Validator number_in(double low, double high, bool whole = true)
 inline void add_patch_options(CLI::App* cmd, Patch_cli_options& o)
 {
   cmd->add_option("--labels", o.labels,
-                  "Region label file: one integer per face of the mesh file (file order). Each connected region is a "
-                  "patch; the borders between regions are the sides. Default: the colours or integer face property "
+                  "Region label file: one integer per face of the mesh file (file order). The regions keep their borders: "
+                  "with --layout quads each is split into four-sided patches (a label file that is a layout already, "
+                  "as segment writes, is kept as it is; a region that is a whole disc follows the rule for discs), with "
+                  "voronoi each connected region is a patch. Default: the colours or integer face property "
                   "painted in a PLY/OFF mesh, else automatic patches (a disc whose map as one patch is good stays one patch)");
   cmd->add_option("--layout", o.layout,
                   "How patches are made where no labels say: quads (four-sided patches, conforming, refined until each "
@@ -246,7 +248,8 @@ inline std::string patching_clause(const diffuv::Patching_report& r, const Patch
     if(l.fallback_patches > 0) s += ", " + count_text(l.fallback_patches, "other patch", "other patches");
     // The search serves quads and regions kept whole too, not only the other patches.
     if(r.corners_chosen > 0)
-      s += ", " + count_text(r.corners_chosen, "patch", "patches") + " with corners chosen by their maps";
+      s += ", " + count_text(r.corners_chosen, "patch", "patches") +
+           (r.corners_chosen == 1 ? " with corners chosen by its map" : " with corners chosen by their maps");
     if(r.merged > 0) s += ", " + std::to_string(r.merged) + " merged (fewer than four border vertices)";
     if(r.cut > 0) s += ", " + count_text(r.cut, "region not a disc", "regions not discs") + " (cut into cells)";
     if(r.discs_laid_out > 0)

@@ -134,6 +134,41 @@ std::vector<std::size_t> whole_patches_to_lay_out(const Judge& judge, const Segm
     return judge_candidates(judge, seg, candidates);
 }
 
+// Which of the patches flagged in `disc` (each a whole component and a disc)
+// stay one patch, as `options.discs` says; counts the others in
+// `r.discs_laid_out`. A disc without an interior vertex (a polygon cut into
+// triangles) always stays whole: every path through it is a chord, so it has
+// no cells to be cut into (a 600-gon took 36 s to be laid out into 5
+// patches no better than one).
+template <class TriangleMesh, class Judge>
+std::vector<char> discs_kept_whole(const TriangleMesh& tm, const Segmentation<TriangleMesh>& seg, const std::vector<char>& disc,
+                                   const Patching_options& options, Patching_report& r, const Judge& judge)
+{
+  std::vector<char> whole(disc.size(), 0), open(disc.size(), 0);
+  for(std::size_t p = 0; p < disc.size(); ++p) {
+    if(!disc[p]) continue;
+    const bool interior = std::any_of(seg.patch_faces[p].begin(), seg.patch_faces[p].end(), [&](auto f) {
+      for(auto v : CGAL::vertices_around_face(halfedge(f, tm), tm))
+        if(!CGAL::is_border(v, tm)) return true;
+      return false;
+    });
+    (interior && options.discs != Disc_components::whole ? open : whole)[p] = 1;
+  }
+  if(std::find(open.begin(), open.end(), 1) == open.end()) return whole;
+  std::vector<std::size_t> laid_out;
+  if(options.discs == Disc_components::laid_out) {
+    for(std::size_t p = 0; p < open.size(); ++p)
+      if(open[p]) laid_out.push_back(p);
+  } else {
+    laid_out = whole_patches_to_lay_out(judge, seg, open);
+  }
+  r.discs_laid_out += laid_out.size();
+  for(std::size_t p : laid_out) open[p] = 0;
+  for(std::size_t p = 0; p < open.size(); ++p)
+    if(open[p]) whole[p] = 1;
+  return whole;
+}
+
 // disc_patches() with the four-sided layout.
 template <class TriangleMesh, class VertexPointMap, class Judge>
 Status four_sided_patches(const TriangleMesh& tm, std::vector<int> face_labels, VertexPointMap vpm,
@@ -161,21 +196,12 @@ Status four_sided_patches(const TriangleMesh& tm, std::vector<int> face_labels, 
     // a disc kept whole) give the same patches.
     std::vector<std::size_t> component_faces(r.components, 0);
     for(std::size_t c : component) ++component_faces[c];
-    std::vector<char> whole(seg.number_of_patches(), 0);
+    std::vector<char> disc(seg.number_of_patches(), 0);
     for(std::size_t p = 0; p < seg.number_of_patches(); ++p)
-      whole[p] = !seg.patch_faces[p].empty() &&
-                 seg.patch_faces[p].size() == component_faces[component[get(findex, seg.patch_faces[p].front())]] &&
-                 check_patch_disc(tm, seg, p);
-    const std::size_t discs = static_cast<std::size_t>(std::count(whole.begin(), whole.end(), 1));
-    if(options.discs == Disc_components::laid_out) {
-      r.discs_laid_out = discs;
-      whole.assign(whole.size(), 0);
-    } else if(options.discs == Disc_components::judged && discs > 0) {
-      for(std::size_t p : whole_patches_to_lay_out(judge, seg, whole)) {
-        whole[p] = 0;
-        ++r.discs_laid_out;
-      }
-    }
+      disc[p] = !seg.patch_faces[p].empty() &&
+                seg.patch_faces[p].size() == component_faces[component[get(findex, seg.patch_faces[p].front())]] &&
+                check_patch_disc(tm, seg, p);
+    const std::vector<char> whole = discs_kept_whole(tm, seg, disc, options, r, judge);
     if(std::find(whole.begin(), whole.end(), 1) != whole.end()) {
       bool any = false;
       for(std::size_t p = 0; p < seg.number_of_patches(); ++p) {
@@ -208,16 +234,9 @@ Status four_sided_patches(const TriangleMesh& tm, std::vector<int> face_labels, 
     const std::vector<int> component_labels(component.begin(), component.end());
     const Segmentation<TriangleMesh> by_component = patches_from_labels(tm, vpm, component_labels);
     const std::size_t nc = by_component.number_of_patches();
-    std::vector<char> whole(nc, 0);
-    for(std::size_t c = 0; c < nc; ++c) whole[c] = options.discs != Disc_components::laid_out && check_patch_disc(tm, by_component, c);
-    if(options.discs == Disc_components::judged && std::find(whole.begin(), whole.end(), 1) != whole.end())
-      for(std::size_t c : whole_patches_to_lay_out(judge, by_component, whole)) {
-        whole[c] = 0;
-        ++r.discs_laid_out;
-      }
-    if(options.discs == Disc_components::laid_out)
-      for(std::size_t c = 0; c < nc; ++c)
-        if(check_patch_disc(tm, by_component, c)) ++r.discs_laid_out;
+    std::vector<char> disc(nc, 0);
+    for(std::size_t c = 0; c < nc; ++c) disc[c] = check_patch_disc(tm, by_component, c).ok();
+    const std::vector<char> whole = discs_kept_whole(tm, by_component, disc, options, r, judge);
     face_labels.assign(num_faces(tm), std::numeric_limits<int>::min());
     bool any = false;
     for(std::size_t c = 0; c < nc; ++c) {

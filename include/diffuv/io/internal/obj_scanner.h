@@ -4,6 +4,7 @@
 #ifndef DIFFUV_IO_INTERNAL_OBJ_SCANNER_H
 #define DIFFUV_IO_INTERNAL_OBJ_SCANNER_H
 
+#include <diffuv/core/error.h>
 #include <diffuv/io/internal/mesh_scan.h>
 #include <diffuv/io/internal/number_tokens.h>
 
@@ -157,7 +158,7 @@ inline Text_mesh_scan scan_obj(std::string_view text, Polygon_soup& soup)
       }
       soup.polygons.push_back(std::move(polygon));
     } else if(!obj_keyword_ignored(keyword)) {
-      return fail(line_number, "unknown keyword \"" + std::string(keyword) + "\"");
+      return fail(line_number, "unknown keyword \"" + printable(std::string(keyword)) + "\"");  // binary junk escaped
     }
   }
 
