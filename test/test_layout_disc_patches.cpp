@@ -18,7 +18,6 @@
 #include <diffuv/patches/split_at_junctions.h>
 #include <diffuv/patches/split_cap.h>
 
-#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/boost/graph/Face_filtered_graph.h>
 
 #include <boost/graph/dijkstra_shortest_paths.hpp>
@@ -369,40 +368,6 @@ TEST(DiscPatches, ALabelledDiscFollowsTheRuleForDiscs)
     EXPECT_EQ(it->second, unlabelled.face_patch[f]) << "face " << f;
   }
   EXPECT_EQ(to_unlabelled.size(), unlabelled.number_of_patches());
-}
-
-
-// A disc without an interior vertex (a polygon cut into triangles: every
-// path through it is a chord) is never laid out, even when asked: there are
-// no cells to cut it into (a 600-gon took 36 s to be cut into 5 patches).
-TEST(DiscPatches, ADiscWithoutInteriorVertexStaysWhole)
-{
-  using diffuv_test::Mesh;
-  using Judge = diffuv::Raw_map_judge<Mesh, decltype(std::declval<const Mesh&>().points())>;
-  Mesh polygon;
-  std::vector<Mesh::Vertex_index> ring;
-  const int n = 300;
-  for(int i = 0; i < n; ++i) {
-    const double a = 2 * 3.14159265358979 * i / n;
-    ring.push_back(polygon.add_vertex(diffuv_test::Point_3(std::cos(a), std::sin(a), 0)));
-  }
-  polygon.add_face(ring);
-  CGAL::Polygon_mesh_processing::triangulate_faces(polygon);
-  ASSERT_EQ(num_faces(polygon), static_cast<std::size_t>(n - 2));
-  for(auto v : vertices(polygon)) ASSERT_TRUE(CGAL::is_border(v, polygon));
-  for(auto discs : {diffuv::Disc_components::judged, diffuv::Disc_components::laid_out}) {
-    for(bool labelled : {false, true}) {
-      diffuv::Patching_options options;
-      options.discs = discs;
-      diffuv::Patching_report report;
-      diffuv::Segmentation<Mesh> seg;
-      const std::vector<int> labels = labelled ? std::vector<int>(num_faces(polygon), 0) : std::vector<int>();
-      ASSERT_TRUE(diffuv::disc_patches(polygon, polygon.points(), labels, seg, options, &report, Judge(polygon, polygon.points())).ok());
-      EXPECT_EQ(seg.number_of_patches(), 1u) << "labelled " << labelled;
-      EXPECT_EQ(report.discs_laid_out, 0u);
-      EXPECT_EQ(report.whole_components, 1u);
-    }
-  }
 }
 
 

@@ -136,36 +136,22 @@ std::vector<std::size_t> whole_patches_to_lay_out(const Judge& judge, const Segm
 
 // Which of the patches flagged in `disc` (each a whole component and a disc)
 // stay one patch, as `options.discs` says; counts the others in
-// `r.discs_laid_out`. A disc without an interior vertex (a polygon cut into
-// triangles) always stays whole: every path through it is a chord, so it has
-// no cells to be cut into (a 600-gon took 36 s to be laid out into 5
-// patches no better than one).
+// `r.discs_laid_out`.
 template <class TriangleMesh, class Judge>
-std::vector<char> discs_kept_whole(const TriangleMesh& tm, const Segmentation<TriangleMesh>& seg, const std::vector<char>& disc,
+std::vector<char> discs_kept_whole(const Segmentation<TriangleMesh>& seg, const std::vector<char>& disc,
                                    const Patching_options& options, Patching_report& r, const Judge& judge)
 {
-  std::vector<char> whole(disc.size(), 0), open(disc.size(), 0);
-  for(std::size_t p = 0; p < disc.size(); ++p) {
-    if(!disc[p]) continue;
-    const bool interior = std::any_of(seg.patch_faces[p].begin(), seg.patch_faces[p].end(), [&](auto f) {
-      for(auto v : CGAL::vertices_around_face(halfedge(f, tm), tm))
-        if(!CGAL::is_border(v, tm)) return true;
-      return false;
-    });
-    (interior && options.discs != Disc_components::whole ? open : whole)[p] = 1;
-  }
-  if(std::find(open.begin(), open.end(), 1) == open.end()) return whole;
+  std::vector<char> whole = disc;
+  if(options.discs == Disc_components::whole || std::find(disc.begin(), disc.end(), 1) == disc.end()) return whole;
   std::vector<std::size_t> laid_out;
   if(options.discs == Disc_components::laid_out) {
-    for(std::size_t p = 0; p < open.size(); ++p)
-      if(open[p]) laid_out.push_back(p);
+    for(std::size_t p = 0; p < disc.size(); ++p)
+      if(disc[p]) laid_out.push_back(p);
   } else {
-    laid_out = whole_patches_to_lay_out(judge, seg, open);
+    laid_out = whole_patches_to_lay_out(judge, seg, disc);
   }
   r.discs_laid_out += laid_out.size();
-  for(std::size_t p : laid_out) open[p] = 0;
-  for(std::size_t p = 0; p < open.size(); ++p)
-    if(open[p]) whole[p] = 1;
+  for(std::size_t p : laid_out) whole[p] = 0;
   return whole;
 }
 
@@ -201,7 +187,7 @@ Status four_sided_patches(const TriangleMesh& tm, std::vector<int> face_labels, 
       disc[p] = !seg.patch_faces[p].empty() &&
                 seg.patch_faces[p].size() == component_faces[component[get(findex, seg.patch_faces[p].front())]] &&
                 check_patch_disc(tm, seg, p);
-    const std::vector<char> whole = discs_kept_whole(tm, seg, disc, options, r, judge);
+    const std::vector<char> whole = discs_kept_whole(seg, disc, options, r, judge);
     if(std::find(whole.begin(), whole.end(), 1) != whole.end()) {
       bool any = false;
       for(std::size_t p = 0; p < seg.number_of_patches(); ++p) {
@@ -236,7 +222,7 @@ Status four_sided_patches(const TriangleMesh& tm, std::vector<int> face_labels, 
     const std::size_t nc = by_component.number_of_patches();
     std::vector<char> disc(nc, 0);
     for(std::size_t c = 0; c < nc; ++c) disc[c] = check_patch_disc(tm, by_component, c).ok();
-    const std::vector<char> whole = discs_kept_whole(tm, by_component, disc, options, r, judge);
+    const std::vector<char> whole = discs_kept_whole(by_component, disc, options, r, judge);
     face_labels.assign(num_faces(tm), std::numeric_limits<int>::min());
     bool any = false;
     for(std::size_t c = 0; c < nc; ++c) {
