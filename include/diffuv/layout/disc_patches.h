@@ -155,6 +155,36 @@ std::vector<char> discs_kept_whole(const Segmentation<TriangleMesh>& seg, const 
   return whole;
 }
 
+// The patches of `laid` (a layout of some of the mesh's faces), then each
+// patch of `from` flagged in `whole`, as one patch without corners. With
+// `renumber`, every patch's label is its index (part 0); otherwise the laid
+// patches keep theirs and the whole ones take their label in `from`.
+template <class TriangleMesh>
+Segmentation<TriangleMesh> with_whole_patches(const TriangleMesh& tm, Segmentation<TriangleMesh> laid,
+                                              const Segmentation<TriangleMesh>& from, const std::vector<char>& whole,
+                                              bool renumber)
+{
+  using Seg = Segmentation<TriangleMesh>;
+  auto findex = get(boost::face_index, tm);
+  laid.patch_corners.resize(laid.patch_faces.size(), Seg::no_corners());
+  for(std::size_t p = 0; p < from.number_of_patches(); ++p) {
+    if(!whole[p]) continue;
+    laid.patch_label.push_back(from.patch_label[p]);
+    laid.patch_part.push_back(0);
+    laid.patch_faces.push_back(from.patch_faces[p]);
+    laid.patch_corners.push_back(Seg::no_corners());
+  }
+  laid.face_patch.assign(num_faces(tm), Seg::no_patch);
+  for(std::size_t p = 0; p < laid.patch_faces.size(); ++p) {
+    for(auto f : laid.patch_faces[p]) laid.face_patch[get(findex, f)] = p;
+    if(renumber) {
+      laid.patch_label[p] = static_cast<int>(p);
+      laid.patch_part[p] = 0;
+    }
+  }
+  return laid;
+}
+
 // disc_patches() with the four-sided layout.
 template <class TriangleMesh, class VertexPointMap, class Judge>
 Status four_sided_patches(const TriangleMesh& tm, std::vector<int> face_labels, VertexPointMap vpm,
@@ -162,7 +192,6 @@ Status four_sided_patches(const TriangleMesh& tm, std::vector<int> face_labels, 
 {
   auto findex = get(boost::face_index, tm);
   const bool labelled = !face_labels.empty();
-  bool labelled_done = false;  // labelled regions laid out already (some discs kept whole)
   std::vector<std::size_t> component(num_faces(tm));
   r.components = CGAL::Polygon_mesh_processing::connected_components(
       tm, boost::make_iterator_property_map(component.begin(), findex));
@@ -171,11 +200,14 @@ Status four_sided_patches(const TriangleMesh& tm, std::vector<int> face_labels, 
     // the Voronoi layout; with `strict`, a region that is not a disc is reported.
     seg = patches_from_labels(tm, vpm, face_labels);
     r.merged = merge_small_patches(tm, vpm, face_labels, seg);
-    for(std::size_t p = 0; p < seg.number_of_patches(); ++p)
-      if(!check_patch_disc(tm, seg, p)) {
+    std::vector<char> is_disc(seg.number_of_patches(), 0);
+    for(std::size_t p = 0; p < seg.number_of_patches(); ++p) {
+      is_disc[p] = check_patch_disc(tm, seg, p).ok();
+      if(!is_disc[p]) {
         if(options.strict) r.not_discs.push_back(p);
         else ++r.cut;  // its cells are discs
       }
+    }
     if(!r.not_discs.empty()) return check_patch_disc(tm, seg, r.not_discs.front());
     // A region that is a whole component and a disc follows the rule for disc
     // components below, so that labels read back from `segment` (one label on
@@ -184,34 +216,18 @@ Status four_sided_patches(const TriangleMesh& tm, std::vector<int> face_labels, 
     for(std::size_t c : component) ++component_faces[c];
     std::vector<char> disc(seg.number_of_patches(), 0);
     for(std::size_t p = 0; p < seg.number_of_patches(); ++p)
-      disc[p] = !seg.patch_faces[p].empty() &&
-                seg.patch_faces[p].size() == component_faces[component[get(findex, seg.patch_faces[p].front())]] &&
-                check_patch_disc(tm, seg, p);
+      disc[p] = is_disc[p] && !seg.patch_faces[p].empty() &&
+                seg.patch_faces[p].size() == component_faces[component[get(findex, seg.patch_faces[p].front())]];
     const std::vector<char> whole = discs_kept_whole(seg, disc, options, r, judge);
-    if(std::find(whole.begin(), whole.end(), 1) != whole.end()) {
-      bool any = false;
-      for(std::size_t p = 0; p < seg.number_of_patches(); ++p) {
-        if(!whole[p]) { any = true; continue; }
-        ++r.whole_components;
-        for(auto f : seg.patch_faces[p]) face_labels[get(findex, f)] = std::numeric_limits<int>::min();
-      }
-      Segmentation<TriangleMesh> laid;
-      if(any) quad_layout(tm, vpm, face_labels, laid, options.quads, &r.layout, judge);
-      Segmentation<TriangleMesh> kept = laid;
-      if(kept.face_patch.empty()) kept.face_patch.assign(num_faces(tm), Segmentation<TriangleMesh>::no_patch);
-      if(kept.patch_corners.size() < kept.patch_faces.size())
-        kept.patch_corners.resize(kept.patch_faces.size(), Segmentation<TriangleMesh>::no_corners());
-      for(std::size_t p = 0; p < seg.number_of_patches(); ++p) {
-        if(!whole[p]) continue;
-        for(auto f : seg.patch_faces[p]) kept.face_patch[get(findex, f)] = kept.patch_faces.size();
-        kept.patch_label.push_back(seg.patch_label[p]);
-        kept.patch_part.push_back(0);
-        kept.patch_faces.push_back(seg.patch_faces[p]);
-        kept.patch_corners.push_back(Segmentation<TriangleMesh>::no_corners());
-      }
-      seg = std::move(kept);
-      labelled_done = true;
+    bool any = false;
+    for(std::size_t p = 0; p < seg.number_of_patches(); ++p) {
+      if(!whole[p]) { any = true; continue; }
+      ++r.whole_components;
+      for(auto f : seg.patch_faces[p]) face_labels[get(findex, f)] = std::numeric_limits<int>::min();
     }
+    Segmentation<TriangleMesh> laid;
+    if(any) quad_layout(tm, vpm, face_labels, laid, options.quads, &r.layout, judge);
+    seg = with_whole_patches(tm, std::move(laid), seg, whole, false);
   } else {
     // A component that is a disc may stay one patch (its corners by equal
     // arcs): with `judged`, if the judge finds its map good (a disc whose
@@ -232,29 +248,9 @@ Status four_sided_patches(const TriangleMesh& tm, std::vector<int> face_labels, 
     }
     r.automatic = any;
     Segmentation<TriangleMesh> laid;
-    if(any) {
-      // quad_layout() of the non-disc components only; the discs come after, whole.
-      quad_layout(tm, vpm, face_labels, laid, options.quads, &r.layout, judge, Region_labels::areas);
-    }
-    seg = Segmentation<TriangleMesh>();
-    seg.face_patch.assign(num_faces(tm), Segmentation<TriangleMesh>::no_patch);
-    auto add = [&](const std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>& faces,
-                   const std::array<typename Segmentation<TriangleMesh>::vertex_descriptor, 4>& corners) {
-      for(auto f : faces) seg.face_patch[get(findex, f)] = seg.patch_faces.size();
-      seg.patch_label.push_back(static_cast<int>(seg.patch_faces.size()));
-      seg.patch_part.push_back(0);
-      seg.patch_faces.push_back(faces);
-      seg.patch_corners.push_back(corners);
-    };
-    for(std::size_t p = 0; p < laid.number_of_patches(); ++p)
-      add(laid.patch_faces[p], laid.patch_corners.empty() ? Segmentation<TriangleMesh>::no_corners() : laid.patch_corners[p]);
-    for(std::size_t c = 0; c < nc; ++c)
-      if(whole[c]) add(by_component.patch_faces[c], Segmentation<TriangleMesh>::no_corners());
-  }
-  if(labelled && !labelled_done) {
-    Segmentation<TriangleMesh> laid;
-    quad_layout(tm, vpm, face_labels, laid, options.quads, &r.layout, judge);
-    seg = std::move(laid);
+    // quad_layout() of the non-disc components only; the discs come after, whole.
+    if(any) quad_layout(tm, vpm, face_labels, laid, options.quads, &r.layout, judge, Region_labels::areas);
+    seg = with_whole_patches(tm, std::move(laid), by_component, whole, true);
   }
   // Labelled regions keep their borders: faces move only between their sub-patches.
   if(options.hand_off_flat_triangles) r.flat_triangles_handed = hand_flat_triangles_to_neighbours(tm, vpm, seg, labelled);
