@@ -204,6 +204,52 @@ TEST(Repair, AScrambledMapFallsBackToTheWholePatch)
   for(vertex_descriptor v : vertices(grid)) EXPECT_NEAR(CGAL::squared_distance(uv[v], expected[v]), 0., 1e-18) << v;
 }
 
+TEST(Repair, ManyFoldsInASmallPatchAreRepairedLocallyFirst)
+{
+  // An 11 x 11 block of vertices mirrored in u: its 200 inner triangles flip,
+  // over a tenth of the grid's 1,800. A patch this small (the layout's quads
+  // are) tries local rounds first; the block and two rings around it are
+  // re-solved, the grid comes back, and the rest of the grid keeps its uv.
+  const std::size_t n = 30;
+  const Mesh grid = make_grid(n, n);
+  const auto sides = grid_sides(grid, n);
+  std::vector<Point_2> uv = grid_uv(grid);
+  const std::size_t first = 10, last = 20;  // block columns and rows
+  const double centre = 0.5 * (double(first) + double(last)) / double(n);
+  for(std::size_t j = first; j <= last; ++j)
+    for(std::size_t i = first; i <= last; ++i) {
+      const Point_2 q = uv[grid_vertex(n, i, j)];
+      uv[grid_vertex(n, i, j)] = Point_2(2 * centre - q.x(), q.y());
+    }
+  const std::vector<Point_2> mirrored = uv;
+  const std::size_t flipped = measure(grid, uv).flipped;
+  ASSERT_GT(10 * flipped, num_faces(grid));
+  ASSERT_LT(num_faces(grid), diffuv::Repair_options().whole_patch_faces);
+
+  diffuv::Repair_report report;
+  auto uv_map = boost::make_iterator_property_map(uv.begin(), get(boost::vertex_index, grid));
+  ASSERT_TRUE(diffuv::repair_folds(grid, grid.points(), sides, uv_map, {}, &report).ok());
+  EXPECT_FALSE(report.whole_patch);
+  EXPECT_GE(report.folded_faces, flipped);
+  EXPECT_LE(report.moved_vertices, 15u * 15u);  // the block, grown by two rings at most
+  EXPECT_TRUE(measure(grid, uv).injective());
+  expect_grid_back(grid, uv);
+  for(std::size_t j = 1; j < n; ++j)
+    for(std::size_t i = 1; i < n; ++i)
+      if(i + 3 < first || i > last + 3 || j + 3 < first || j > last + 3)
+        EXPECT_EQ(uv[grid_vertex(n, i, j)], mirrored[grid_vertex(n, i, j)]) << i << ' ' << j;
+
+  // The rule for large patches (folds over a tenth: the whole patch at once),
+  // asked of this one.
+  uv = mirrored;
+  diffuv::Repair_options large;
+  large.whole_patch_faces = 0;
+  ASSERT_TRUE(diffuv::repair_folds(grid, grid.points(), sides, uv_map, large, &report).ok());
+  EXPECT_TRUE(report.whole_patch);
+  EXPECT_TRUE(measure(grid, uv).injective());
+  expect_grid_back(grid, uv);
+}
+
 TEST(Repair, ASideOutOfOrderIsRespacedByArcLength)
 {
   const std::size_t n = 10;

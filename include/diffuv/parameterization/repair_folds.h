@@ -50,8 +50,14 @@ namespace diffuv {
 /// How `repair_folds()` works.
 struct Repair_options {
   bool enabled = true;            ///< false keeps the raw diffusion coordinates (the paper's method)
-  std::size_t initial_rings = 1;  ///< rings of vertices added around the first folds
-  std::size_t max_local_rounds = 6;  ///< local re-solves (rings doubling) before the whole patch is re-solved
+  /// Rings of vertices added around the first folds' own ring (0: the folds'
+  /// vertices and their neighbours only; then 1, 2, 4, ... rings).
+  std::size_t initial_rings = 0;
+  std::size_t max_local_rounds = 7;  ///< local re-solves (rings doubling) before the whole patch is re-solved
+  /// A patch of more faces whose folds cover over a tenth of it is re-solved
+  /// whole at once: local re-solves fail there and cost 4-8x the one solve
+  /// (lion-head, doc/quality.md). A smaller patch tries local re-solves first.
+  std::size_t whole_patch_faces = 2000;
   /// A triangle bent by more than this (sigma_max / sigma_min of the map on the
   /// chart's rectangle, 1 = shape kept) is re-solved like a fold if that helps
   /// (doc/quality.md); 0 turns the near-fold pass off.
@@ -171,11 +177,13 @@ Status repair_folds(const TriangleMesh& tm, VertexPointMap vpm,
   // 2. Local re-solves around the defects, rings doubling; the region only
   //    grows, and stops growing locally at a third of the patch.
   std::vector<bool> region(n, false);
-  std::size_t rings = std::max<std::size_t>(options.initial_rings, 1);
+  std::size_t rings = options.initial_rings;
   std::size_t defects = p.find_defects();
-  // Folds over a tenth of the patch are not local: go straight to step 3.
-  const std::size_t local_rounds = 10 * defects > p.triangle.size() ? 0 : options.max_local_rounds;
-  for(std::size_t round = 0; defects > 0 && round < local_rounds; ++round, rings *= 2) {
+  // Folds over a tenth of a large patch are not local: go straight to step 3.
+  // On small patches (the layout's) local rounds still move fewer vertices.
+  const bool not_local = p.triangle.size() > options.whole_patch_faces && 10 * defects > p.triangle.size();
+  const std::size_t local_rounds = not_local ? 0 : options.max_local_rounds;
+  for(std::size_t round = 0; defects > 0 && round < local_rounds; ++round, rings = std::max<std::size_t>(1, 2 * rings)) {
     std::vector<std::size_t> seeds;
     for(std::size_t i = 0; i < n; ++i)
       if(p.bad_vertex[i]) seeds.push_back(i);
