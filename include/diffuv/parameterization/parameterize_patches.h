@@ -225,15 +225,24 @@ std::vector<Patch_result<TriangleMesh>> parameterize_patches(const TriangleMesh&
     r.milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   });
 
+  // Every chart first, then their rectangles: a look-up after add_chart()
+  // re-indexes the atlas's vertices, once per chart if the two alternated
+  // (5 % of man's whole run, measured).
+  std::vector<double> add_milliseconds(seg.number_of_patches(), 0.);
   for(std::size_t p = 0; p < seg.number_of_patches(); ++p) {
     if(!results[p].status) continue;
     const auto start = std::chrono::steady_clock::now();
     results[p].chart = atlas.add_chart(seg.patch_faces[p], std::move(charts[p].vertices), std::move(charts[p].uv));
+    add_milliseconds[p] = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  }
+  for(std::size_t p = 0; p < seg.number_of_patches(); ++p) {
+    if(!results[p].status) continue;
+    const auto start = std::chrono::steady_clock::now();
     const std::size_t c = results[p].chart;
     const auto size = stretch_optimal_rectangle(tm, vpm, atlas.chart(c).faces, atlas.chart_uv_map(c),
                                                 side_length_rectangle(results[p].sides, vpm));
     atlas.set_chart_size(c, size[0], size[1]);
-    results[p].milliseconds +=
+    results[p].milliseconds += add_milliseconds[p] +
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   }
   return results;
