@@ -61,13 +61,17 @@ TEST(QuadLayout, LabelledRegionsAreSplitWithinTheirBorders)
   const Mesh& cow = cgal_mesh("cow.off");
   std::vector<int> labels = height_bands(cow, 1, 4);
   // Slivers of a band with fewer than four border vertices join a neighbour
-  // first (documented in disc_patches()); the bands are what is left.
+  // first, and faces jutting out of a band by two edges join the band they
+  // jut into (documented in disc_patches(), tested below); the bands are
+  // what is left.
   Seg bands = diffuv::patches_from_labels(cow, cow.points(), labels);
   diffuv::merge_small_patches(cow, cow.points(), labels, bands);
+  const std::size_t ears = diffuv::move_ear_faces_across_borders(cow, cow.points(), labels);
   Seg seg;
   diffuv::Patching_report report;
-  ASSERT_TRUE(diffuv::disc_patches(cow, cow.points(), labels, seg, diffuv::Patching_options(), &report).ok());
+  ASSERT_TRUE(diffuv::disc_patches(cow, cow.points(), height_bands(cow, 1, 4), seg, diffuv::Patching_options(), &report).ok());
   EXPECT_EQ(report.layout.kept_regions, 0u);
+  EXPECT_EQ(report.layout.region_ears_moved, ears);
   std::map<int, std::set<int>> parts;
   for(std::size_t p = 0; p < seg.number_of_patches(); ++p) {
     for(auto f : seg.patch_faces[p]) ASSERT_EQ(labels[f.idx()], seg.patch_label[p]) << "patch " << p << " crosses a band";
@@ -82,6 +86,98 @@ TEST(QuadLayout, LabelledRegionsAreSplitWithinTheirBorders)
   // a band's border may not collapse, so the bands' small cells keep 5-8
   // arcs and have no room for that many cuts; they become fallback patches.
   EXPECT_GE(3 * c.quads, seg.number_of_patches());
+}
+
+// Faces of `labels` with two edges towards one same other label (an ear of
+// the region's border), counted by brute force over the edges.
+std::size_t region_ears(const Mesh& m, const std::vector<int>& labels)
+{
+  std::size_t ears = 0;
+  for(auto f : faces(m)) {
+    std::map<int, int> towards;
+    for(auto h : CGAL::halfedges_around_face(halfedge(f, m), m)) {
+      const auto g = face(opposite(h, m), m);
+      if(g != Mesh::null_face() && labels[g.idx()] != labels[f.idx()]) ++towards[labels[g.idx()]];
+    }
+    for(const auto& [label, edges] : towards) ears += edges >= 2;
+  }
+  return ears;
+}
+
+TEST(QuadLayout, FacesJuttingOutOfARegionJoinTheRegionTheyJutInto)
+{
+  // Cow cut by height: the bands' borders are stair steps, full of faces
+  // with two edges towards the next band (flat in any map onto the square).
+  const Mesh& cow = cgal_mesh("cow.off");
+  const std::vector<int> bands = height_bands(cow, 1, 4);
+  std::vector<int> labels = bands;
+  const std::size_t before = region_ears(cow, labels);
+  const std::size_t moved = diffuv::move_ear_faces_across_borders(cow, cow.points(), labels);
+  EXPECT_GT(before, 20u);
+  EXPECT_GE(moved, before / 2);
+  EXPECT_LT(moved, num_faces(cow) / 50);  // the borders, not the regions, change
+  EXPECT_LT(region_ears(cow, labels), before / 4);
+  std::size_t changed = 0;
+  std::map<int, std::size_t> sizes;
+  for(auto f : faces(cow)) {
+    ++sizes[labels[f.idx()]];
+    if(labels[f.idx()] == bands[f.idx()]) continue;
+    ++changed;
+    // A moved face fills a notch of the region it joined: two of its
+    // neighbours or more are in it.
+    int inside = 0;
+    for(auto h : CGAL::halfedges_around_face(halfedge(f, cow), cow))
+      inside += labels[face(opposite(h, cow), cow).idx()] == labels[f.idx()];
+    EXPECT_GE(inside, 2) << "face " << f.idx();
+  }
+  EXPECT_EQ(changed, moved);
+  EXPECT_EQ(sizes.size(), 4u);  // no band lost
+
+  // The same moves on a shuffled copy: decided by the surface, not the numbering.
+  const Shuffled s = shuffled_copy(cow, 5);
+  std::vector<int> shuffled(bands.size());
+  for(std::size_t k = 0; k < s.fperm.size(); ++k) shuffled[k] = bands[s.fperm[k]];
+  EXPECT_EQ(diffuv::move_ear_faces_across_borders(s.mesh, s.mesh.points(), shuffled), moved);
+  for(std::size_t k = 0; k < s.fperm.size(); ++k) ASSERT_EQ(shuffled[k], labels[s.fperm[k]]) << "face " << k;
+
+  // A region of one face jutting out is not emptied.
+  const Mesh grid = make_grid(3, 3);
+  std::vector<int> lone(num_faces(grid), 0);
+  lone[4] = 1;
+  EXPECT_EQ(diffuv::move_ear_faces_across_borders(grid, grid.points(), lone), 0u);
+  EXPECT_EQ(lone[4], 1);
+}
+
+TEST(QuadLayout, CowInHeightBandsHasOnlyOneToOneCharts)
+{
+  // Issue #18's labelled target: before the jutting faces moved, 8 of cow's
+  // charts had a flat triangle (doc/layout.md); with --keep-flat-triangles
+  // (no hand-off, no move) some still do.
+  const Mesh& cow = cgal_mesh("cow.off");
+  auto degenerate = [&](bool hand_off, std::size_t* ears) {
+    diffuv::Patching_options options;
+    options.hand_off_flat_triangles = hand_off;
+    Seg seg;
+    diffuv::Patching_report report;
+    EXPECT_TRUE(diffuv::disc_patches(cow, cow.points(), height_bands(cow, 1, 4), seg, options, &report,
+                                     diffuv::Raw_map_judge<Mesh, decltype(cow.points())>(cow, cow.points())).ok());
+    *ears = report.layout.region_ears_moved;
+    diffuv::Uv_atlas<Mesh> atlas(cow);
+    const auto results = diffuv::parameterize_patches(cow, cow.points(), seg, atlas);
+    std::size_t count = 0;
+    for(const auto& r : results) {
+      EXPECT_TRUE(r.status.ok());
+      if(!r.status) continue;
+      const auto d = diffuv::measure_distortion(cow, cow.points(), atlas.chart(r.chart).faces, atlas.chart_texture_map(r.chart));
+      count += d.flipped + d.degenerate + d.overlapping_pairs;
+    }
+    return count;
+  };
+  std::size_t ears = 0, kept_ears = 0;
+  EXPECT_EQ(degenerate(true, &ears), 0u);
+  EXPECT_GT(ears, 0u);
+  EXPECT_GT(degenerate(false, &kept_ears), 0u);
+  EXPECT_EQ(kept_ears, 0u);
 }
 
 TEST(QuadLayout, FallbackPatchesNeedingMoreThanFourCornersAreCut)

@@ -78,7 +78,9 @@ inline CLI::Validator number_in(double low, double high, bool whole = true)
 inline void add_patch_options(CLI::App* cmd, Patch_cli_options& o)
 {
   cmd->add_option("--labels", o.labels,
-                  "Region label file: one integer per face of the mesh file (file order). The regions keep their borders: "
+                  "Region label file: one integer per face of the mesh file (file order). The regions keep their borders "
+                  "(with --layout quads, but for faces that jut out of a region by two edges, flat in any map onto the "
+                  "square: they join the region they jut into, unless --keep-flat-triangles): "
                   "with --layout quads each is split into four-sided patches (a label file that is a layout already, "
                   "as segment writes, is kept as it is; a region that is a whole disc follows the rule for discs), with "
                   "voronoi each connected region is a patch. Default: the colours or integer face property "
@@ -102,7 +104,8 @@ inline void add_patch_options(CLI::App* cmd, Patch_cli_options& o)
                 "instead of splitting them in two");
   cmd->add_flag("--keep-flat-triangles", o.keep_flat_triangles,
                 "Keep every face in its region even when its three vertices end up on one side of the patch (flat in "
-                "any map onto the square) instead of handing it to a neighbouring patch");
+                "any map onto the square) instead of handing it to a neighbouring patch, and every face in its "
+                "labelled region even when it juts out of it by two edges");
   cmd->add_flag("--strict", o.strict, "Report a region that is not a disc instead of cutting it into discs");
 }
 
@@ -252,6 +255,10 @@ inline std::string patching_clause(const diffuv::Patching_report& r, const Patch
            (r.corners_chosen == 1 ? " with corners chosen by its map" : " with corners chosen by their maps");
     if(r.merged > 0) s += ", " + std::to_string(r.merged) + " merged (fewer than four border vertices)";
     if(r.cut > 0) s += ", " + count_text(r.cut, "region not a disc", "regions not discs") + " (cut into cells)";
+    if(l.region_ears_moved > 0)
+      s += ", " + count_text(l.region_ears_moved, "face") +
+           (l.region_ears_moved == 1 ? " jutting out of its region moved into the next"
+                                     : " jutting out of their regions moved into the next");
     if(r.discs_laid_out > 0)
       s += ", " + count_text(r.discs_laid_out, "disc") + " laid out (" +
            (o.patches > 0 ? std::string("--patches given") : std::string("as one patch its map would fold or stretch")) + ")";

@@ -47,7 +47,9 @@ struct Patching_options {
   bool split_caps = true;        ///< (voronoi layout) split caps (one neighbour all around) in two, as the paper recommends
   bool strict = false;           ///< report a labelled region that is not a disc instead of cutting it
   /// hand a face left flat by its patch's four sides to a neighbouring patch
-  /// (`hand_flat_triangles_to_neighbours()`)
+  /// (`hand_flat_triangles_to_neighbours()`); with labels and the quads
+  /// layout, also let a face that juts out of its region join the region it
+  /// juts into first (`Quad_layout_options::move_region_ears`)
   bool hand_off_flat_triangles = true;
   Voronoi_options automatic;     ///< (voronoi layout) automatic patches: how many seeds to start from
   Quad_layout_options quads;     ///< (quads layout) cells, collapses, refinement
@@ -226,7 +228,9 @@ Status four_sided_patches(const TriangleMesh& tm, std::vector<int> face_labels, 
       for(auto f : seg.patch_faces[p]) face_labels[get(findex, f)] = std::numeric_limits<int>::min();
     }
     Segmentation<TriangleMesh> laid;
-    if(any) quad_layout(tm, vpm, face_labels, laid, options.quads, &r.layout, judge);
+    Quad_layout_options quads = options.quads;
+    quads.move_region_ears = quads.move_region_ears && options.hand_off_flat_triangles;
+    if(any) quad_layout(tm, vpm, face_labels, laid, quads, &r.layout, judge);
     seg = with_whole_patches(tm, std::move(laid), seg, whole, false);
   } else {
     // A component that is a disc may stay one patch (its corners by equal
@@ -252,7 +256,8 @@ Status four_sided_patches(const TriangleMesh& tm, std::vector<int> face_labels, 
     if(any) quad_layout(tm, vpm, face_labels, laid, options.quads, &r.layout, judge, Region_labels::areas);
     seg = with_whole_patches(tm, std::move(laid), by_component, whole, true);
   }
-  // Labelled regions keep their borders: faces move only between their sub-patches.
+  // Labelled regions keep their borders (but for the ear faces moved by the
+  // layout): faces move only between their sub-patches.
   if(options.hand_off_flat_triangles) r.flat_triangles_handed = hand_flat_triangles_to_neighbours(tm, vpm, seg, labelled);
   const std::size_t unmappable = merge_unmappable_patches(tm, vpm, seg);
   r.merged += unmappable;

@@ -32,6 +32,7 @@
 #include <diffuv/layout/voronoi_cells.h>
 #include <diffuv/patches/patches_from_labels.h>
 #include <diffuv/patches/segmentation.h>
+#include <diffuv/patches/smooth_region_borders.h>
 
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
@@ -191,7 +192,7 @@ Status quad_layout(const TriangleMesh& tm, VertexPointMap vpm, const std::vector
     CGAL::Polygon_mesh_processing::connected_components(tm, boost::make_iterator_property_map(component.begin(), findex));
     region_labels.assign(component.begin(), component.end());
   }
-  const Segmentation<TriangleMesh> regions = patches_from_labels(tm, vpm, region_labels);
+  Segmentation<TriangleMesh> regions = patches_from_labels(tm, vpm, region_labels);
   if(labelled) {
     // A layout read back (what `diffuv segment` writes): every region a disc,
     // nearly all of the surface in regions with four runs of neighbours. Its
@@ -217,6 +218,10 @@ Status quad_layout(const TriangleMesh& tm, VertexPointMap vpm, const std::vector
       r.fallback_patches = regions.number_of_patches() - four_sided_regions;
       r.kept_regions = regions.number_of_patches();
       return Status();
+    }
+    if(options.move_region_ears) {
+      r.region_ears_moved = move_ear_faces_across_borders(tm, vpm, region_labels);
+      if(r.region_ears_moved > 0) regions = patches_from_labels(tm, vpm, region_labels);
     }
   }
 
@@ -349,10 +354,11 @@ Status quad_layout(const TriangleMesh& tm, VertexPointMap vpm, const std::vector
     }
     Quad_layout_report round_report;
     quads_from_cells(tm, vpm, cells, layout, options, &round_report, labelled ? &region_of_cell : nullptr, &memo);
-    const std::size_t refined_so_far = r.refined_cells;
+    const std::size_t refined_so_far = r.refined_cells, ears_moved = r.region_ears_moved;
     r = round_report;
     r.rounds = round;
     r.refined_cells = refined_so_far;
+    r.region_ears_moved = ears_moved;
     if(round >= options.refine_rounds) break;
     // Only the cell holding most of a patch may be refined, and only if it is
     // large enough: the judge need not map patches of smaller cells.

@@ -27,6 +27,12 @@ struct Quad_layout_options {
   /// share of their faces lie in regions with exactly four runs of neighbours
   /// (a layout read back: its few fallback patches are small).
   double keep_layout_fraction = 0.75;
+  /// Labelled regions (not a layout read back): a face with two edges on its
+  /// region's border towards one same other region joins that region first
+  /// (`move_ear_faces_across_borders()`). Such a face is flat in any map of
+  /// its patch unless a corner sits on its tip, and a painted border's stair
+  /// steps have many (cow in four height bands: 46 faces, man in six: 117).
+  bool move_region_ears = true;
   /// Voronoi distances grow by this factor times sqrt(region area / seeds)
   /// per radian of turn along a path (0: plain geodesic cells; kept for study,
   /// it did not help on the CGAL meshes, see doc/layout.md).
@@ -54,6 +60,7 @@ struct Quad_layout_report {
   std::size_t region_fallbacks = 0;  ///< dual regions that could not be fanned nor kept as plain sectors
   std::size_t plain_regions = 0;     ///< dual regions kept as the cells' sectors (corner at the junction)
   std::size_t kept_regions = 0;      ///< labelled regions kept whole (they were a four-sided layout already)
+  std::size_t region_ears_moved = 0; ///< faces that jutted out of their labelled region, moved into the region they jutted into (`move_region_ears`)
   std::size_t rounds = 0;            ///< refinement rounds run
   std::size_t refined_cells = 0;     ///< seeds added by the refinement
   std::size_t framed_cells = 0;      ///< deep cells split into walls and a tip (extremities)

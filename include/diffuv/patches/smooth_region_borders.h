@@ -20,6 +20,7 @@
 #include <map>
 #include <numeric>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace diffuv {
@@ -68,6 +69,88 @@ std::size_t smooth_region_borders(
           ++this_pass;
           break;
         }
+    }
+    changed += this_pass;
+    if(this_pass == 0) break;
+  }
+  return changed;
+}
+
+/// Moves the faces that jut out of their region into the region they jut
+/// into: a face with two edges on its region's border towards one same other
+/// region is flat in any map of its patch onto the square (its three vertices
+/// lie on the side that border becomes), unless a corner sits on its tip.
+/// Unlike `smooth_region_borders()`, which visits faces one after the other,
+/// each pass decides every move from the labels as they were before it, so
+/// the result depends on neither the face numbering nor an order: of two
+/// neighbours that would both move (the teeth of a zigzag border, each
+/// jutting into the other's region), only the larger moves, ties broken by
+/// the lexicographically smaller centroid; the other is decided again in the
+/// next pass. A region never loses its last face.
+///
+/// \param vpm the points (face areas and centroids order the moves)
+/// \param face_labels #F entries, changed in place
+/// \param ignore_label faces with this label neither move nor take a face
+/// \returns how many faces changed label
+template <class TriangleMesh, class VertexPointMap>
+std::size_t move_ear_faces_across_borders(const TriangleMesh& tm, VertexPointMap vpm, std::vector<int>& face_labels,
+                                          std::size_t passes = 8,
+                                          int ignore_label = std::numeric_limits<int>::min())
+{
+  using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
+  using Point_3 = typename boost::property_traits<VertexPointMap>::value_type;
+  auto findex = get(boost::face_index, tm);
+  auto null_face = boost::graph_traits<TriangleMesh>::null_face();
+  // Which of two faces goes first: the larger, then the smaller centroid.
+  auto key = [&](face_descriptor f) {
+    const auto h = halfedge(f, tm);
+    const Point_3 a = get(vpm, source(h, tm)), b = get(vpm, target(h, tm)), c = get(vpm, target(next(h, tm), tm));
+    return std::make_pair(-CGAL::to_double(CGAL::squared_area(a, b, c)), CGAL::centroid(a, b, c));
+  };
+  auto first = [&](face_descriptor f, face_descriptor g) { return key(f) < key(g); };
+  std::size_t changed = 0;
+  for(std::size_t pass = 0; pass < passes; ++pass) {
+    // Every move of this pass, from the labels before it.
+    std::vector<std::pair<face_descriptor, int>> moves;
+    std::vector<char> moving(face_labels.size(), 0);
+    for(face_descriptor f : faces(tm)) {
+      const int own = face_labels[get(findex, f)];
+      if(own == ignore_label || !CGAL::is_triangle(halfedge(f, tm), tm)) continue;
+      std::array<int, 3> across{};
+      int k = 0;
+      for(auto h : CGAL::halfedges_around_face(halfedge(f, tm), tm)) {
+        const face_descriptor g = face(opposite(h, tm), tm);
+        across[k++] = g == null_face ? own : face_labels[get(findex, g)];
+      }
+      for(int a = 0; a < 3; ++a)
+        if(across[a] != own && across[a] != ignore_label &&
+           (across[a] == across[(a + 1) % 3] || across[a] == across[(a + 2) % 3])) {
+          moves.emplace_back(f, across[a]);
+          moving[get(findex, f)] = 1;
+          break;
+        }
+    }
+    // Keep the moves that no moving neighbour goes before, and none that
+    // would empty a region.
+    std::map<int, std::size_t> region_size, leaving;
+    for(int label : face_labels) ++region_size[label];
+    std::vector<std::pair<face_descriptor, int>> kept;
+    for(const auto& [f, to] : moves) {
+      bool preceded = false;
+      for(auto h : CGAL::halfedges_around_face(halfedge(f, tm), tm)) {
+        const face_descriptor g = face(opposite(h, tm), tm);
+        preceded |= g != null_face && moving[get(findex, g)] && first(g, f);
+      }
+      if(preceded) continue;
+      kept.emplace_back(f, to);
+      ++leaving[face_labels[get(findex, f)]];
+    }
+    std::size_t this_pass = 0;
+    for(const auto& [f, to] : kept) {
+      const int own = face_labels[get(findex, f)];
+      if(leaving[own] >= region_size[own]) continue;
+      face_labels[get(findex, f)] = to;
+      ++this_pass;
     }
     changed += this_pass;
     if(this_pass == 0) break;
