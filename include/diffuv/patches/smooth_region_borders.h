@@ -82,11 +82,13 @@ std::size_t smooth_region_borders(
 /// lie on the side that border becomes), unless a corner sits on its tip.
 /// Unlike `smooth_region_borders()`, which visits faces one after the other,
 /// each pass decides every move from the labels as they were before it, so
-/// the result depends on neither the face numbering nor an order: of two
-/// neighbours that would both move (the teeth of a zigzag border, each
-/// jutting into the other's region), only the larger moves, ties broken by
-/// the lexicographically smaller centroid; the other is decided again in the
-/// next pass. A region never loses its last face.
+/// the result depends on neither the face numbering nor an order: the moves
+/// are taken larger face first (ties: the lexicographically smaller
+/// centroid), each unless a neighbour moved already in this pass (the teeth
+/// of a zigzag border jut into each other's region: every other one moves),
+/// and the faces left are decided again in the next pass. Each move takes two
+/// edges off the borders and adds at most one, so the passes end. A label
+/// never loses its last face.
 ///
 /// \param vpm the points (face areas and centroids order the moves)
 /// \param face_labels #F entries, changed in place
@@ -94,7 +96,7 @@ std::size_t smooth_region_borders(
 /// \returns how many faces changed label
 template <class TriangleMesh, class VertexPointMap>
 std::size_t move_ear_faces_across_borders(const TriangleMesh& tm, VertexPointMap vpm, std::vector<int>& face_labels,
-                                          std::size_t passes = 8,
+                                          std::size_t passes = 1000,
                                           int ignore_label = std::numeric_limits<int>::min())
 {
   using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
@@ -130,28 +132,29 @@ std::size_t move_ear_faces_across_borders(const TriangleMesh& tm, VertexPointMap
           break;
         }
     }
-    // Keep the moves that no moving neighbour goes before, and none that
-    // would empty a region.
+    // Accept the moves in the order of `first`, each unless a neighbour was
+    // accepted already (a face's move changes what its neighbours see) or
+    // ties with it; none that would empty a label.
+    std::sort(moves.begin(), moves.end(), [&](const auto& a, const auto& b) { return first(a.first, b.first); });
     std::map<int, std::size_t> region_size, leaving;
     for(int label : face_labels) ++region_size[label];
+    std::vector<char> accepted(face_labels.size(), 0);
     std::vector<std::pair<face_descriptor, int>> kept;
     for(const auto& [f, to] : moves) {
-      bool preceded = false;
+      bool blocked = false;
       for(auto h : CGAL::halfedges_around_face(halfedge(f, tm), tm)) {
         const face_descriptor g = face(opposite(h, tm), tm);
-        preceded |= g != null_face && moving[get(findex, g)] && first(g, f);
+        if(g == null_face) continue;
+        blocked |= accepted[get(findex, g)] || (moving[get(findex, g)] && !first(g, f) && !first(f, g));
       }
-      if(preceded) continue;
-      kept.emplace_back(f, to);
-      ++leaving[face_labels[get(findex, f)]];
-    }
-    std::size_t this_pass = 0;
-    for(const auto& [f, to] : kept) {
       const int own = face_labels[get(findex, f)];
-      if(leaving[own] >= region_size[own]) continue;
-      face_labels[get(findex, f)] = to;
-      ++this_pass;
+      if(blocked || leaving[own] + 1 >= region_size[own]) continue;
+      accepted[get(findex, f)] = 1;
+      ++leaving[own];
+      kept.emplace_back(f, to);
     }
+    for(const auto& [f, to] : kept) face_labels[get(findex, f)] = to;
+    const std::size_t this_pass = kept.size();
     changed += this_pass;
     if(this_pass == 0) break;
   }
