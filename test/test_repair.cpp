@@ -85,6 +85,55 @@ TEST(Repair, AFoldInAFlatGridIsRepairedExactlyAndOnlyThere)
   expect_grid_back(grid, uv);
 }
 
+TEST(Repair, AVertexPushedOutOfItsLinkIsPutBackAloneWithoutASolve)
+{
+  // The same push: every neighbour of the pushed vertex is where it belongs,
+  // so the vertex has a place from which all its triangles are
+  // counter-clockwise (its link's kernel, here the hexagon of its neighbours,
+  // whose centroid is its grid point). It alone moves, with no linear solve;
+  // without the kernel step a ring is re-solved around it.
+  const std::size_t n = 20;
+  const Mesh grid = make_grid(n, n);
+  const auto sides = grid_sides(grid, n);
+  std::vector<Point_2> uv = grid_uv(grid);
+  const vertex_descriptor pushed = grid_vertex(n, 5, 5);
+  const Point_2 home = uv[pushed];
+  uv[pushed] = Point_2(0.40, 0.33);
+  const std::vector<Point_2> start = uv;
+  auto uv_map = boost::make_iterator_property_map(uv.begin(), get(boost::vertex_index, grid));
+
+  diffuv::Repair_report report;
+  ASSERT_TRUE(diffuv::repair_folds(grid, grid.points(), sides, uv_map, {}, &report).ok());
+  EXPECT_GT(report.folded_faces, 0u);
+  EXPECT_EQ(report.moved_vertices, 1u);
+  EXPECT_EQ(report.rounds, 0u);
+  EXPECT_NEAR(uv[pushed].x(), home.x(), 1e-12);
+  EXPECT_NEAR(uv[pushed].y(), home.y(), 1e-12);
+  EXPECT_TRUE(measure(grid, uv).injective());
+
+  uv = start;
+  diffuv::Repair_options no_kernel;
+  no_kernel.kernel_sweeps = 0;
+  ASSERT_TRUE(diffuv::repair_folds(grid, grid.points(), sides, uv_map, no_kernel, &report).ok());
+  EXPECT_GT(report.moved_vertices, 1u);
+  EXPECT_GT(report.rounds, 0u);
+  EXPECT_TRUE(measure(grid, uv).injective());
+
+  // Two neighbours swapped: one-to-one again, and nothing moved beyond
+  // their rings.
+  const std::vector<Point_2> home_uv = grid_uv(grid);
+  uv = home_uv;  // a copy into the same buffer: uv_map stays valid
+  std::swap(uv[grid_vertex(n, 8, 8)], uv[grid_vertex(n, 9, 8)]);
+  const std::vector<Point_2> swapped = uv;
+  ASSERT_TRUE(diffuv::repair_folds(grid, grid.points(), sides, uv_map, {}, &report).ok());
+  EXPECT_TRUE(measure(grid, uv).injective());
+  EXPECT_GE(report.moved_vertices, 1u);
+  for(std::size_t j = 0; j <= n; ++j)
+    for(std::size_t i = 0; i <= n; ++i)
+      if(i + 4 < 8 || i > 9 + 4 || j + 4 < 8 || j > 8 + 4)
+        EXPECT_EQ(uv[grid_vertex(n, i, j)], swapped[grid_vertex(n, i, j)]) << i << ' ' << j;
+}
+
 double worst_angle(const Mesh& m, const std::vector<Point_2>& uv)
 {
   std::vector<diffuv::Triangle_distortion> per_face;

@@ -6,8 +6,12 @@
 //  1. each side of the border must run monotonically along its edge of the
 //     square; a side that does not is re-spaced by arc length (CGAL's
 //     Square_border_arc_length_parameterizer_3 does the same for every side);
-//  2. the interior vertices of every folded triangle (flipped or degenerate,
-//     or around a vertex the map winds around twice), grown by rings, are re-solved as a
+//  2. an interior vertex of a folded triangle (flipped or degenerate, or
+//     around a vertex the map winds around twice) that has a place from which
+//     all its triangles turn counter-clockwise (its link's kernel) moves to
+//     that place's centroid, alone, unless that bends a triangle beyond the
+//     near-fold limit below; the interior vertices of the folds that
+//     are left, grown by rings, are re-solved as a
 //     convex-combination map (mean value weights, Floater 2003) with every
 //     other vertex fixed; the region grows until no fold remains;
 //  3. as a last resort every interior vertex is re-solved: with the border on
@@ -63,6 +67,11 @@ struct Repair_options {
   /// (doc/quality.md); 0 turns the near-fold pass off.
   double max_angle_distortion = 20;
   std::size_t max_thin_rounds = 3;  ///< near-fold re-solves (rings doubling)
+  /// Sweeps moving the folds' own vertices into the kernels of their links
+  /// before any re-solve, so that fewer vertices leave the diffusion map
+  /// (same layouts: cow 10.2 -> 8.3 % moved, bull 11.9 -> 8.5 %, L2 within
+  /// 0.01: doc/layout.md); 0: none.
+  std::size_t kernel_sweeps = 4;
 };
 
 /// What `repair_folds()` did to one patch (all zero when the repair is off).
@@ -179,6 +188,10 @@ Status repair_folds(const TriangleMesh& tm, VertexPointMap vpm,
   std::vector<bool> region(n, false);
   std::size_t rings = options.initial_rings;
   std::size_t defects = p.find_defects();
+  if(defects > 0 && options.kernel_sweeps > 0) {
+    p.move_into_kernels(options.kernel_sweeps, 1e-12, options.max_angle_distortion);
+    defects = p.find_defects();
+  }
   // Folds over a tenth of a large patch are not local: go straight to step 3.
   // On small patches (the layout's) local rounds still move fewer vertices.
   const bool not_local = p.triangle.size() > options.whole_patch_faces && 10 * defects > p.triangle.size();

@@ -182,6 +182,129 @@ struct Repair_patch {
     }
   }
 
+  /// The kernel of interior vertex i's link: the points of the unit square
+  /// from which every triangle around i is counter-clockwise (each triangle
+  /// (i, a, b) asks i to lie left of a -> b), clipped from the square one
+  /// half-plane at a time. Empty if there is none.
+  std::vector<std::array<double, 2>> link_kernel(std::size_t i) const
+  {
+    using P = std::array<double, 2>;
+    std::vector<P> poly = {P{{0., 0.}}, P{{1., 0.}}, P{{1., 1.}}, P{{0., 1.}}}, next;
+    for(std::size_t f : faces_of[i]) {
+      const auto& t = triangle[f];
+      const int k = t[0] == i ? 0 : (t[1] == i ? 1 : 2);
+      const std::size_t a = t[(k + 1) % 3], b = t[(k + 2) % 3];
+      // side(q) > 0: q left of a -> b (linear in q).
+      auto side = [&](const P& q) { return (u[a] - q[0]) * (v[b] - q[1]) - (v[a] - q[1]) * (u[b] - q[0]); };
+      next.clear();
+      for(std::size_t j = 0; j < poly.size(); ++j) {
+        const P& c = poly[j];
+        const P& d = poly[(j + 1) % poly.size()];
+        const double sc = side(c), sd = side(d);
+        if(sc > 0) next.push_back(c);
+        if((sc > 0) != (sd > 0) && sc != sd) {
+          const double t_cut = sc / (sc - sd);
+          next.push_back(P{{c[0] + t_cut * (d[0] - c[0]), c[1] + t_cut * (d[1] - c[1])}});
+        }
+      }
+      poly.swap(next);
+      if(poly.size() < 3) return {};
+    }
+    return poly;
+  }
+
+  /// Whether interior vertex i, put at `q`, would have every triangle around
+  /// it counter-clockwise and not degenerate, turning once around it, and
+  /// bent by no more than `max_bend` (`bend()`; 0: any bend).
+  bool fits_at(std::size_t i, const std::array<double, 2>& q, double max_bend)
+  {
+    const double keep_u = u[i], keep_v = v[i];
+    u[i] = q[0];
+    v[i] = q[1];
+    bool ok = true;
+    double turn = 0;
+    for(std::size_t f : faces_of[i]) {
+      const auto& t = triangle[f];
+      if(!positive_triangle(t, u, v, 1.) || (max_bend > 0 && !(bend(t) <= max_bend))) { ok = false; break; }
+      const int k = t[0] == i ? 0 : (t[1] == i ? 1 : 2);
+      const std::size_t a = t[(k + 1) % 3], b = t[(k + 2) % 3];
+      const double ax = u[a] - q[0], ay = v[a] - q[1], bx = u[b] - q[0], by = v[b] - q[1];
+      turn += std::atan2(ax * by - ay * bx, ax * bx + ay * by);
+    }
+    u[i] = keep_u;
+    v[i] = keep_v;
+    return ok && std::abs(turn - 2 * CGAL_PI) < 1e-6;
+  }
+
+  /// Moves interior vertices of the local defects into the kernels of their
+  /// links, at the kernel's centroid, so that every triangle around each is
+  /// counter-clockwise again: only the defects' own vertices leave the
+  /// diffusion map, where a re-solve moves their whole ring. Each sweep finds
+  /// every candidate's place first, then moves them in order (the one around
+  /// more defective faces first, ties by the smaller 3D point), each unless
+  /// a neighbour moved already in this sweep or ties with it, so the result
+  /// depends on neither the vertex order nor an order of visits. A kernel
+  /// must cover more than `min_area` of the square, and its centroid must
+  /// give the vertex a single turn and triangles that `fits_at()` accepts
+  /// with `max_bend` (a fold mended into a near-fold is left to the
+  /// re-solve). Returns the vertices moved.
+  std::size_t move_into_kernels(std::size_t sweeps, double min_area, double max_bend)
+  {
+    const std::size_t n = size();
+    std::vector<char> moved(n, 0);
+    std::size_t count = 0;
+    for(std::size_t sweep = 0; sweep < sweeps; ++sweep) {
+      if(find_defects() == 0) break;
+      std::vector<std::size_t> badness(n, 0);
+      for(std::size_t f = 0; f < triangle.size(); ++f)
+        if(bad_face[f])
+          for(std::size_t i : triangle[f]) ++badness[i];
+      for(std::size_t i = 0; i < n; ++i) badness[i] += bad_vertex[i] ? 1 : 0;
+      auto first = [&](std::size_t a, std::size_t b) {
+        if(badness[a] != badness[b]) return badness[a] > badness[b];
+        return xyz[a] < xyz[b];
+      };
+      std::vector<char> candidate(n, 0);
+      std::vector<std::pair<std::size_t, std::array<double, 2>>> places;
+      for(std::size_t i = 0; i < n; ++i) {
+        if(badness[i] == 0 || side_mask[i] || faces_of[i].empty()) continue;
+        candidate[i] = 1;
+        const auto kernel = link_kernel(i);
+        if(kernel.size() < 3) continue;
+        double area = 0, cx = 0, cy = 0;
+        for(std::size_t j = 0; j < kernel.size(); ++j) {
+          const auto& c = kernel[j];
+          const auto& d = kernel[(j + 1) % kernel.size()];
+          const double w = c[0] * d[1] - d[0] * c[1];
+          area += w;
+          cx += (c[0] + d[0]) * w;
+          cy += (c[1] + d[1]) * w;
+        }
+        if(!(area / 2 > min_area)) continue;
+        const std::array<double, 2> q = {{cx / (3 * area), cy / (3 * area)}};
+        if(fits_at(i, q, max_bend)) places.push_back({i, q});
+      }
+      std::sort(places.begin(), places.end(), [&](const auto& a, const auto& b) { return first(a.first, b.first); });
+      std::vector<char> accepted(n, 0);
+      std::size_t this_sweep = 0;
+      for(const auto& [i, q] : places) {
+        bool blocked = false;
+        for(std::size_t j : ring[i])
+          blocked |= accepted[j] || (candidate[j] && !first(i, j) && !first(j, i));
+        if(blocked) continue;
+        accepted[i] = 1;
+        u[i] = q[0];
+        v[i] = q[1];
+        count += !moved[i];
+        moved[i] = 1;
+        ++this_sweep;
+      }
+      if(this_sweep == 0) break;
+    }
+    find_defects();
+    return count;
+  }
+
   /// The weights of a re-solved vertex: mean value weights (Floater 2003),
   /// w_ij = (tan(a/2) + tan(b/2)) / |x_i - x_j| with a and b the 3D angles at
   /// x_i next to edge ij. They follow the surface's shape (better angles than
