@@ -140,6 +140,22 @@ TEST(QuadLayout, FacesJuttingOutOfARegionJoinTheRegionTheyJutInto)
   EXPECT_EQ(diffuv::move_ear_faces_across_borders(s.mesh, s.mesh.points(), shuffled), moved);
   for(std::size_t k = 0; k < s.fperm.size(); ++k) ASSERT_EQ(shuffled[k], labels[s.fperm[k]]) << "face " << k;
 
+  // A zigzag border (a row of cells whose lower triangles are region 0 and
+  // upper ones region 1): every tooth juts into the other region, and
+  // neighbouring teeth rank one after the other; none is left.
+  const std::size_t teeth = 30;
+  const Mesh strip = make_grid(teeth, 3);
+  std::vector<int> zigzag(num_faces(strip));
+  for(std::size_t j = 0; j < 3; ++j)
+    for(std::size_t i = 0; i < teeth; ++i) {
+      zigzag[2 * (j * teeth + i)] = j == 2 ? 1 : 0;      // lower triangle of cell (i, j)
+      zigzag[2 * (j * teeth + i) + 1] = j == 0 ? 0 : 1;  // upper triangle
+    }
+  const std::size_t zigzag_ears = region_ears(strip, zigzag);
+  ASSERT_GT(zigzag_ears, teeth);
+  EXPECT_GT(diffuv::move_ear_faces_across_borders(strip, strip.points(), zigzag), 0u);
+  EXPECT_EQ(region_ears(strip, zigzag), 0u);
+
   // A region of one face jutting out is not emptied.
   const Mesh grid = make_grid(3, 3);
   std::vector<int> lone(num_faces(grid), 0);

@@ -59,19 +59,27 @@ diffuv::Distortion_summary measure(const Mesh& m, const std::vector<Point_2>& uv
                                     boost::make_iterator_property_map(uv.begin(), get(boost::vertex_index, m)));
 }
 
-TEST(Repair, AFoldInAFlatGridIsRepairedExactlyAndOnlyThere)
+// A grid's own map with vertex (5, 5) pushed across three of its
+// neighbours: its triangles flip.
+std::vector<Point_2> pushed_uv(const Mesh& grid, vertex_descriptor pushed)
 {
+  std::vector<Point_2> uv = grid_uv(grid);
+  uv[pushed] = Point_2(0.40, 0.33);
+  EXPECT_GT(measure(grid, uv).flipped, 0u);
+  return uv;
+}
+
+TEST(Repair, AFoldInAFlatGridIsReSolvedExactlyAndOnlyThere)
+{
+  // Without the kernel step (below): the fold and a ring around it are
+  // re-solved, and mean value weights give the flat grid back.
   const std::size_t n = 20;
   const Mesh grid = make_grid(n, n);
-  const auto sides = grid_sides(grid, n);
-  std::vector<Point_2> uv = grid_uv(grid);
-  // Push one interior vertex across three of its neighbours: its triangles flip.
-  const vertex_descriptor pushed = grid_vertex(n, 5, 5);
-  uv[pushed] = Point_2(0.40, 0.33);
-  ASSERT_GT(measure(grid, uv).flipped, 0u);
-
+  std::vector<Point_2> uv = pushed_uv(grid, grid_vertex(n, 5, 5));
+  diffuv::Repair_options no_kernel;
+  no_kernel.kernel_sweeps = 0;
   diffuv::Repair_report report;
-  ASSERT_TRUE(diffuv::repair_folds(grid, grid.points(), sides, boost::make_iterator_property_map(uv.begin(), get(boost::vertex_index, grid)), {}, &report).ok());
+  ASSERT_TRUE(diffuv::repair_folds(grid, grid.points(), grid_sides(grid, n), boost::make_iterator_property_map(uv.begin(), get(boost::vertex_index, grid)), no_kernel, &report).ok());
   const auto d = measure(grid, uv);
   EXPECT_EQ(d.flipped, 0u);
   EXPECT_EQ(d.overlapping_pairs, 0u);
@@ -79,45 +87,32 @@ TEST(Repair, AFoldInAFlatGridIsRepairedExactlyAndOnlyThere)
   EXPECT_GT(report.folded_faces, 0u);
   EXPECT_FALSE(report.whole_patch);
   EXPECT_EQ(report.moved_border_vertices, 0u);
+  EXPECT_GT(report.rounds, 0u);
   // Local: a few rings around the fold, not the grid's 19 x 19 interior vertices.
-  EXPECT_GE(report.moved_vertices, 1u);
+  EXPECT_GT(report.moved_vertices, 1u);
   EXPECT_LT(report.moved_vertices, 60u);
   expect_grid_back(grid, uv);
 }
 
 TEST(Repair, AVertexPushedOutOfItsLinkIsPutBackAloneWithoutASolve)
 {
-  // The same push: every neighbour of the pushed vertex is where it belongs,
-  // so the vertex has a place from which all its triangles are
-  // counter-clockwise (its link's kernel, here the hexagon of its neighbours,
-  // whose centroid is its grid point). It alone moves, with no linear solve;
-  // without the kernel step a ring is re-solved around it.
+  // Every neighbour of the pushed vertex is where it belongs, so the vertex
+  // has a place from which all its triangles are counter-clockwise (its
+  // link's kernel, here the hexagon of its neighbours, whose centroid is its
+  // grid point). By default it alone moves, with no linear solve.
   const std::size_t n = 20;
   const Mesh grid = make_grid(n, n);
   const auto sides = grid_sides(grid, n);
-  std::vector<Point_2> uv = grid_uv(grid);
   const vertex_descriptor pushed = grid_vertex(n, 5, 5);
-  const Point_2 home = uv[pushed];
-  uv[pushed] = Point_2(0.40, 0.33);
-  const std::vector<Point_2> start = uv;
+  std::vector<Point_2> uv = pushed_uv(grid, pushed);
   auto uv_map = boost::make_iterator_property_map(uv.begin(), get(boost::vertex_index, grid));
-
   diffuv::Repair_report report;
   ASSERT_TRUE(diffuv::repair_folds(grid, grid.points(), sides, uv_map, {}, &report).ok());
   EXPECT_GT(report.folded_faces, 0u);
   EXPECT_EQ(report.moved_vertices, 1u);
   EXPECT_EQ(report.rounds, 0u);
-  EXPECT_NEAR(uv[pushed].x(), home.x(), 1e-12);
-  EXPECT_NEAR(uv[pushed].y(), home.y(), 1e-12);
   EXPECT_TRUE(measure(grid, uv).injective());
-
-  uv = start;
-  diffuv::Repair_options no_kernel;
-  no_kernel.kernel_sweeps = 0;
-  ASSERT_TRUE(diffuv::repair_folds(grid, grid.points(), sides, uv_map, no_kernel, &report).ok());
-  EXPECT_GT(report.moved_vertices, 1u);
-  EXPECT_GT(report.rounds, 0u);
-  EXPECT_TRUE(measure(grid, uv).injective());
+  expect_grid_back(grid, uv);
 
   // Two neighbours swapped: one-to-one again, and nothing moved beyond
   // their rings.
