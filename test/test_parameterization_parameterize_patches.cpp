@@ -1,5 +1,6 @@
 // Tests of parameterize_patches() (parameterization/parameterize_patches.h)
-// and the compact patch graph it maps on (graph/patch_graph.h).
+// and the compact copies of a patch it maps on (graph/patch_graph.h,
+// patches/patch_mesh.h).
 #include "test_data.h"
 
 #include <diffuv/graph/patch_graph.h>
@@ -9,6 +10,7 @@
 #include <diffuv/parameterization/parameterize_patches.h>
 #include <diffuv/patches/flat_triangles.h>
 #include <diffuv/patches/merge_small_patches.h>
+#include <diffuv/patches/patch_mesh.h>
 #include <diffuv/patches/patches_from_labels.h>
 #include <diffuv/patches/region_sides.h>
 #include <diffuv/patches/smooth_region_borders.h>
@@ -121,6 +123,85 @@ TEST(PatchGraph, PaperMethodGivesTheCoordinatesOfTheFilteredGraph)
       EXPECT_NEAR(chart.uv[i].y(), want.y(), 1e-12) << "patch " << p << " vertex " << chart.vertices[i];
     }
   }
+}
+
+// A patch copied as a mesh of its own is walked as the Face_filtered_graph of
+// the patch is: the same vertices and faces in the same order, and each vertex
+// and face with the same halfedge, so the turns around a vertex start alike.
+TEST(PatchMesh, WalksThePatchAsTheFilteredGraphDoes)
+{
+  const Mesh& cow = cgal_mesh("cow.off");
+  const Mapped_patches mp = automatic_patches(cow);
+  ASSERT_GT(mp.seg.number_of_patches(), 20u);
+  using Copy = diffuv::Patch_mesh<Mesh, decltype(cow.points())>;
+  Copy copy;  // one object for every patch, as parameterize_patches() uses it
+  std::size_t border_vertices = 0;
+  for(std::size_t p = 0; p < mp.seg.number_of_patches(); ++p) {
+    ASSERT_TRUE(copy.build(cow, cow.points(), mp.seg.patch_faces[p])) << "patch " << p;
+    const Copy::Mesh& local = copy.mesh();
+    const CGAL::Face_filtered_graph<Mesh> patch(cow, mp.seg.patch_faces[p]);
+    ASSERT_EQ(num_vertices(local), num_vertices(patch)) << "patch " << p;
+    ASSERT_EQ(num_faces(local), num_faces(patch)) << "patch " << p;
+    ASSERT_EQ(num_edges(local), num_edges(patch)) << "patch " << p;
+    std::vector<vertex_descriptor> order(vertices(patch).begin(), vertices(patch).end());
+    ASSERT_EQ(copy.mesh_vertices(), order) << "patch " << p;
+    for(vertex_descriptor v : vertices(cow)) ASSERT_EQ(copy.has(cow, v), patch.is_in_cc(v)) << "patch " << p;
+    auto to_mesh = [&](Copy::vertex_descriptor v) { return copy.mesh_vertices()[v.idx()]; };
+    for(vertex_descriptor v : vertices(patch)) {
+      const Copy::vertex_descriptor lv = copy.local(cow, v);
+      ASSERT_EQ(to_mesh(lv), v);
+      ASSERT_EQ(local.is_border(lv), static_cast<bool>(CGAL::is_border(v, patch))) << "patch " << p;
+      border_vertices += local.is_border(lv);
+      // The turn around v, from its halfedge, as pairs of mesh vertices.
+      std::vector<std::pair<vertex_descriptor, vertex_descriptor>> want, got;
+      for(auto h : CGAL::halfedges_around_target(halfedge(v, patch), patch)) want.emplace_back(source(h, patch), face(h, patch) != boost::graph_traits<CGAL::Face_filtered_graph<Mesh>>::null_face() ? target(next(h, patch), patch) : vertex_descriptor());
+      for(auto h : CGAL::halfedges_around_target(local.halfedge(lv), local))
+        got.emplace_back(to_mesh(local.source(h)), local.face(h) != Copy::Mesh::null_face() ? to_mesh(local.target(local.next(h))) : vertex_descriptor());
+      ASSERT_EQ(got, want) << "patch " << p << " vertex " << v;
+    }
+    std::size_t i = 0;
+    for(face_descriptor f : faces(patch)) {
+      const auto lf = *std::next(local.faces().begin(), static_cast<std::ptrdiff_t>(i++));
+      const auto h = halfedge(f, patch), lh = local.halfedge(lf);
+      ASSERT_EQ(to_mesh(local.source(lh)), source(h, patch)) << "patch " << p << " face " << f;
+      ASSERT_EQ(to_mesh(local.target(lh)), target(h, patch)) << "patch " << p << " face " << f;
+      ASSERT_EQ(to_mesh(local.target(local.next(lh))), target(next(h, patch), patch)) << "patch " << p << " face " << f;
+    }
+  }
+  EXPECT_GT(border_vertices, 0u);
+}
+
+// The default pipeline (fast marching, then the repair) maps each patch on
+// its copy: the coordinates are those of the same steps on the patch's
+// Face_filtered_graph, bit for bit, repaired vertices included.
+TEST(PatchMesh, DefaultPipelineGivesTheMapOfTheFilteredGraph)
+{
+  const Mesh& man = cgal_mesh("man.off");
+  const Mapped_patches mp = automatic_patches(man);
+  diffuv::Uv_atlas<Mesh> atlas(man);
+  const auto results = diffuv::parameterize_patches(man, man.points(), mp.seg, atlas);
+  const auto lengths = diffuv::edge_length_map(man, man.points());
+  std::size_t moved = 0;
+  for(std::size_t p = 0; p < mp.seg.number_of_patches(); ++p) {
+    ASSERT_TRUE(results[p].status.ok()) << "patch " << p;
+    const CGAL::Face_filtered_graph<Mesh> patch(man, mp.seg.patch_faces[p]);
+    auto pindex = get(boost::vertex_index, patch);
+    std::vector<Point_2> uv(num_vertices(patch));
+    auto uv_map = boost::make_iterator_property_map(uv.begin(), pindex);
+    ASSERT_TRUE(diffuv::diffusion_coordinates(patch, results[p].sides, lengths, uv_map).ok());
+    diffuv::Repair_report report;
+    diffuv::repair_folds(patch, man.points(), results[p].sides, uv_map, diffuv::Repair_options(), &report);
+    moved += report.moved_vertices;
+    EXPECT_EQ(report.moved_vertices, results[p].repair.moved_vertices) << "patch " << p;
+    const auto& chart = atlas.chart(results[p].chart);
+    ASSERT_EQ(chart.vertices.size(), uv.size());
+    for(std::size_t i = 0; i < chart.vertices.size(); ++i) {
+      const Point_2 want = uv[get(pindex, chart.vertices[i])];
+      ASSERT_EQ(chart.uv[i].x(), want.x()) << "patch " << p << " vertex " << chart.vertices[i];
+      ASSERT_EQ(chart.uv[i].y(), want.y()) << "patch " << p << " vertex " << chart.vertices[i];
+    }
+  }
+  EXPECT_GT(moved, 0u);  // the repair ran somewhere, so its walks were compared too
 }
 
 // Patches mapped on 1, 2 or all threads: the same atlas, bit for bit, and the

@@ -8,7 +8,7 @@
 //   core/             the vocabulary: Status and the error types, the four sides, colours and the label palette
 //   io/               reading: meshes (OFF, OBJ, PLY, STL), labels, painted regions, corners, colours; safe output files
 //   graph/            multi-source Dijkstra (Fibonacci heap), fast marching, exact geodesics, edge lengths
-//   patches/          labels -> disc patches: segmentation, boundary loops, corners and four sides, flat triangles
+//   patches/          labels -> disc patches: segmentation, boundary loops, corners and four sides, flat triangles, a patch copied as a mesh
 //   layout/           the four-sided layout (Voronoi cells -> quads) and disc_patches(), every way to patches
 //   atlas/            the uv-map: (chart, vertex) -> uv array, kd-tree, point location
 //   metrics/          distortion and injectivity of a chart
@@ -43,6 +43,7 @@
 #include <diffuv/patches/disc_topology.h>
 #include <diffuv/patches/flat_triangles.h>
 #include <diffuv/patches/merge_small_patches.h>
+#include <diffuv/patches/patch_mesh.h>
 #include <diffuv/patches/patch_names.h>
 #include <diffuv/patches/patches_from_labels.h>
 #include <diffuv/patches/region_sides.h>

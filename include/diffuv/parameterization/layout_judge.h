@@ -18,11 +18,11 @@
 #include <diffuv/parameterization/diffusion_coordinates.h>
 #include <diffuv/metrics/distortion.h>
 #include <diffuv/parameterization/parameterize_patches.h>
+#include <diffuv/patches/patch_mesh.h>
 #include <diffuv/patches/segmentation.h>
 
 #include <CGAL/Kernel/global_functions.h>
 
-#include <CGAL/boost/graph/Face_filtered_graph.h>
 
 #include <algorithm>
 #include <array>
@@ -78,19 +78,24 @@ std::vector<double> estimate_corner_choices(const TriangleMesh& tm, VertexPointM
                                             const std::vector<std::size_t>& pool,
                                             const std::vector<std::array<std::size_t, 4>>& choices)
 {
-  using Patch = CGAL::Face_filtered_graph<TriangleMesh>;
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
-  const Patch patch(tm, faces);
+  // The patch as a mesh of its own: O(patch), where a filtered graph of the
+  // whole mesh and the whole mesh's edge lengths cost O(mesh) per patch.
+  Patch_mesh<TriangleMesh, VertexPointMap> copy;
+  if(!copy.build(tm, vpm, faces))
+    return std::vector<double>(choices.size(), std::numeric_limits<double>::infinity());
+  using Patch = typename Patch_mesh<TriangleMesh, VertexPointMap>::Mesh;
+  const Patch& patch = copy.mesh();
   auto pindex = get(boost::vertex_index, patch);
   const std::size_t nv = num_vertices(patch), k = pool.size(), m = loop.size();
   // Arc a: from loop[pool[a]] to loop[pool[a+1]], both ends included.
   std::vector<std::vector<double>> arc_distance(k, std::vector<double>(nv));
   Distance_engine<Patch, DistanceTag, Fibonacci_heap_tag> engine(patch);
-  const auto lengths = edge_length_map(tm, vpm);
+  const auto lengths = edge_length_map(patch);
   for(std::size_t a = 0; a < k; ++a) {
-    std::vector<vertex_descriptor> arc;
+    std::vector<typename Patch::Vertex_index> arc;
     for(std::size_t i = pool[a];; i = (i + 1) % m) {
-      arc.push_back(loop[i]);
+      arc.push_back(copy.local(tm, loop[i]));
       if(i == pool[(a + 1) % k]) break;
     }
     if(!engine.run(arc, lengths, boost::make_iterator_property_map(arc_distance[a].begin(), pindex)))
@@ -113,7 +118,8 @@ std::vector<double> estimate_corner_choices(const TriangleMesh& tm, VertexPointM
     const vertex_descriptor a = source(h, tm), b = target(h, tm), c = target(next(h, tm), tm);
     const auto pa = get(vpm, a), pb = get(vpm, b), pc = get(vpm, c);
     Face_data fd;
-    fd.v = {static_cast<std::size_t>(get(pindex, a)), static_cast<std::size_t>(get(pindex, b)), static_cast<std::size_t>(get(pindex, c))};
+    fd.v = {static_cast<std::size_t>(get(pindex, copy.local(tm, a))), static_cast<std::size_t>(get(pindex, copy.local(tm, b))),
+            static_cast<std::size_t>(get(pindex, copy.local(tm, c)))};
     fd.dp1 = {CGAL::to_double(pb.x() - pa.x()), CGAL::to_double(pb.y() - pa.y()), CGAL::to_double(pb.z() - pa.z())};
     fd.dp2 = {CGAL::to_double(pc.x() - pa.x()), CGAL::to_double(pc.y() - pa.y()), CGAL::to_double(pc.z() - pa.z())};
     const std::array<double, 3> n = {fd.dp1[1] * fd.dp2[2] - fd.dp1[2] * fd.dp2[1], fd.dp1[2] * fd.dp2[0] - fd.dp1[0] * fd.dp2[2],

@@ -11,6 +11,7 @@
 #include <diffuv/parameterization/chart_rectangle.h>
 #include <diffuv/parameterization/diffusion_coordinates.h>
 #include <diffuv/parameterization/repair_folds.h>
+#include <diffuv/patches/patch_mesh.h>
 #include <diffuv/patches/region_sides.h>
 #include <diffuv/patches/segmentation.h>
 
@@ -55,22 +56,26 @@ struct Patch_chart {
 };
 
 // The scratch of one thread: kept from one patch to the next.
-template <class TriangleMesh>
+template <class TriangleMesh, class VertexPointMap = typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type>
 struct Patch_scratch {
   Patch_graph<TriangleMesh> graph;
+  Patch_mesh<TriangleMesh, VertexPointMap> mesh;
+  Four_sides<typename Patch_mesh<TriangleMesh, VertexPointMap>::vertex_descriptor> mesh_sides;  // the sides on `mesh`
 };
 
 // Runs `body(p, scratch)` for every patch, on `threads` threads (0: as many
 // as oneTBB's default arena; 1 or no oneTBB: one after the other).
-template <class TriangleMesh, class Body>
+template <class TriangleMesh, class VertexPointMap = typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type,
+          class Body>
 void for_each_patch(std::size_t patches, std::size_t threads, Body body)
 {
+  using Scratch = Patch_scratch<TriangleMesh, VertexPointMap>;
 #ifdef CGAL_LINKED_WITH_TBB
   if(threads != 1 && patches > 1) {
-    tbb::enumerable_thread_specific<Patch_scratch<TriangleMesh>> scratch;
+    tbb::enumerable_thread_specific<Scratch> scratch;
     auto loop = [&] {
       tbb::parallel_for(tbb::blocked_range<std::size_t>(0, patches, 1), [&](const tbb::blocked_range<std::size_t>& r) {
-        Patch_scratch<TriangleMesh>& local = scratch.local();
+        Scratch& local = scratch.local();
         for(std::size_t p = r.begin(); p != r.end(); ++p) body(p, local);
       });
     };
@@ -84,7 +89,7 @@ void for_each_patch(std::size_t patches, std::size_t threads, Body body)
   }
 #endif
   (void)threads;
-  Patch_scratch<TriangleMesh> scratch;
+  Scratch scratch;
   for(std::size_t p = 0; p < patches; ++p) body(p, scratch);
 }
 
@@ -177,11 +182,12 @@ std::vector<Patch_result<TriangleMesh>> parameterize_patches(const TriangleMesh&
   using Patch = CGAL::Face_filtered_graph<TriangleMesh>;
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
   const auto lengths = edge_length_map(tm, vpm);
+  const auto findex_of_mesh = get(boost::face_index, tm);
   const bool compact_graph = std::is_same<DistanceTag, Graph_distance_tag>::value && !repair.enabled;
   std::vector<Patch_result<TriangleMesh>> results(seg.number_of_patches());
   std::vector<internal::Patch_chart<TriangleMesh>> charts(seg.number_of_patches());
 
-  internal::for_each_patch<TriangleMesh>(seg.number_of_patches(), threads, [&](std::size_t p, auto& scratch) {
+  internal::for_each_patch<TriangleMesh, VertexPointMap>(seg.number_of_patches(), threads, [&](std::size_t p, auto& scratch) {
     Patch_result<TriangleMesh>& r = results[p];
     internal::Patch_chart<TriangleMesh>& chart = charts[p];
     const auto start = std::chrono::steady_clock::now();
@@ -211,6 +217,20 @@ std::vector<Patch_result<TriangleMesh>> parameterize_patches(const TriangleMesh&
                                      parallel_passes);
       if(!r.status) return;
       chart.vertices = pg.mesh_vertices();
+    } else if(auto& pm = scratch.mesh; pm.build(tm, vpm, seg.patch_faces[p], [&](auto f) {
+                return f != boost::graph_traits<TriangleMesh>::null_face() && seg.face_patch[get(findex_of_mesh, f)] == p;
+              }) && pm.local_sides(tm, r.sides, scratch.mesh_sides)) {
+      // The patch copied as a mesh of its own: its walks cost O(patch), not
+      // O(mesh) as on a Face_filtered_graph (kept below for a patch that
+      // cannot be copied).
+      const auto& patch = pm.mesh();
+      chart.uv.resize(num_vertices(patch));
+      auto uv = boost::make_iterator_property_map(chart.uv.begin(), get(boost::vertex_index, patch));
+      Diffusion_coordinates<std::decay_t<decltype(patch)>, DistanceTag, HeapTag> coordinates(patch);
+      r.status = coordinates.compute(scratch.mesh_sides, edge_length_map(patch), uv);
+      if(!r.status) return;
+      repair_folds(patch, patch.points(), scratch.mesh_sides, uv, repair, &r.repair);
+      chart.vertices = pm.mesh_vertices();
     } else {
       const Patch patch(tm, seg.patch_faces[p]);
       auto pindex = get(boost::vertex_index, patch);
