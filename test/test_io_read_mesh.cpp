@@ -5,13 +5,14 @@
 // polygon.
 //
 // Expectations come from the files themselves, parsed here by hand, not
-// from CGAL's readers; except that the one-pass OBJ reader is compared with
-// CGAL's read_OBJ(), whose answers it must give.
+// from CGAL's readers; except that the one-pass OBJ and PLY readers are
+// compared with CGAL's read_OBJ() and read_PLY(), whose answers they must give.
 #include "test_data.h"
 
 #include <diffuv/io/read_mesh.h>
 
 #include <CGAL/IO/OBJ.h>
+#include <CGAL/IO/PLY.h>
 #include <CGAL/IO/polygon_soup_io.h>
 
 #include <gtest/gtest.h>
@@ -28,6 +29,8 @@
 #include <random>
 #include <sstream>
 #include <string>
+#include <type_traits>
+#include <typeinfo>
 #include <vector>
 
 namespace {
@@ -624,6 +627,746 @@ TEST(IoReadMeshObj, OnePassAnswersAsCgalOnMutatedFiles)
   // Both answers occur often enough for the comparison to mean something.
   EXPECT_GT(accepted, trials / 10);
   EXPECT_LT(accepted, trials - trials / 10);
+}
+
+// ---------------------------------------------------------------------------
+// PLY in one pass (issue #20): scan_ply() reads a file as CGAL's read_PLY()
+// does (the same points, bit for bit, and polygons; the same files refused),
+// and refuses with the messages of the scanner that ran before CGAL's reader,
+// so that no message changes.
+
+using diffuv::internal::Ply_type;
+
+// A value read as CGAL's PLY reader reads it from a stream (`>>` into the
+// type, 8-bit ones through 16-bit ones; binary bytes, swapped if big-endian).
+bool previous_ply_value(std::istream& in, int format, Ply_type type, double& value)
+{
+  if(format != 0) {
+    unsigned char b[8];
+    const std::size_t n = diffuv::internal::ply_size(type);
+    if(!in.read(reinterpret_cast<char*>(b), static_cast<std::streamsize>(n)))
+      return false;
+    if(format == 2)
+      std::reverse(b, b + n);
+    auto as = [&](auto t) {
+      std::memcpy(&t, b, sizeof t);
+      value = static_cast<double>(t);
+      return true;
+    };
+    switch(type) {
+      case Ply_type::int8: return as(std::int8_t());
+      case Ply_type::uint8: return as(std::uint8_t());
+      case Ply_type::int16: return as(std::int16_t());
+      case Ply_type::uint16: return as(std::uint16_t());
+      case Ply_type::int32: return as(std::int32_t());
+      case Ply_type::uint32: return as(std::uint32_t());
+      case Ply_type::float32: return as(float());
+      case Ply_type::float64: return as(double());
+    }
+  }
+  auto text = [&](auto read, auto stored) {
+    if(!(in >> read))
+      return false;
+    value = static_cast<decltype(stored)>(read);
+    return true;
+  };
+  switch(type) {
+    case Ply_type::int8: return text(short(), static_cast<signed char>(0));
+    case Ply_type::uint8: return text(static_cast<unsigned short>(0), static_cast<unsigned char>(0));
+    case Ply_type::int16: return text(std::int16_t(), std::int16_t());
+    case Ply_type::uint16: return text(std::uint16_t(), std::uint16_t());
+    case Ply_type::int32: return text(std::int32_t(), std::int32_t());
+    case Ply_type::uint32: return text(std::uint32_t(), std::uint32_t());
+    case Ply_type::float32: return text(float(), float());
+    case Ply_type::float64: return text(double(), double());
+  }
+  return false;
+}
+
+// The PLY scanner that ran before CGAL's reader until issue #20 (on a stream,
+// to find what CGAL's reader would not survive): with CGAL's read_PLY(), the
+// reference for answers and messages.
+diffuv::internal::Text_mesh_scan previous_ply_scan(const std::string& content)
+{
+  using namespace diffuv::internal;
+  Text_mesh_scan scan;
+  const std::uintmax_t file_size = content.size();
+  auto fail = [&](std::size_t line, const std::string& what) {
+    scan.error_line = line;
+    scan.error = "not a valid PLY file (" + what + ")";
+    return scan;
+  };
+  std::istringstream in(content);
+  Ply_header header;
+  std::size_t error_line = 0;
+  const std::string problem = read_ply_header(in, file_size, Ply_header_rules::cgal, header, error_line);
+  if(!problem.empty())
+    return fail(error_line, problem);
+  const std::vector<Ply_element>& elements = header.elements;
+  for(const Ply_element& e : elements) {
+    auto find = [&](const char* name) -> const Ply_property* {
+      for(const Ply_property& p : e.properties)
+        if(p.name == name) return &p;
+      return nullptr;
+    };
+    auto is = [&](const char* name, Ply_type type) {
+      const Ply_property* p = find(name);
+      return p && !p->list && p->type == type;
+    };
+    auto require = [&](const char* name, const char* type, bool ok) {
+      const Ply_property* p = find(name);
+      if(p && !ok)
+        fail(e.line, "property \"" + std::string(name) + "\" of element \"" + e.name + "\" is not of type " + type);
+      return !p || ok;
+    };
+    const bool vertex = e.name == "vertex" || e.name == "vertices";
+    if(vertex)
+      for(const char* xyz : {"x", "y", "z"})
+        if(!require(xyz, "float or double", is(xyz, Ply_type::float32) || is(xyz, Ply_type::float64)))
+          return scan;
+    if(vertex || e.name == "face" || e.name == "faces") {
+      const bool red = is("red", Ply_type::uint8);
+      if((red || is("r", Ply_type::uint8)) && (is("green", Ply_type::uint8) || is("g", Ply_type::uint8)) &&
+         (is("blue", Ply_type::uint8) || is("b", Ply_type::uint8)))
+        for(const char* rgb : red ? std::vector<const char*>{"red", "green", "blue"} : std::vector<const char*>{"r", "g", "b"})
+          if(!require(rgb, "uchar", is(rgb, Ply_type::uint8)))
+            return scan;
+    }
+    if(e.name == "halfedge" && !(is("source", Ply_type::uint32) && is("target", Ply_type::uint32) &&
+                                 is("u", Ply_type::float32) && is("v", Ply_type::float32)))
+      for(const char* end : {"source", "target"})
+        if(!require(end, "uint", is(end, Ply_type::uint32)))
+          return scan;
+  }
+  auto long_list = [](const Ply_property& p) { return p.list && ply_size(p.count_type) == 4; };
+  bool long_lists = false;
+  for(const Ply_element& e : elements)
+    for(const Ply_property& p : e.properties)
+      long_lists = long_lists || long_list(p);
+  if(!long_lists)
+    return scan;
+  for(std::size_t k = 0; k < elements.size(); ++k) {
+    const Ply_element& e = elements[k];
+    const bool faces_then_lists =
+        (e.name == "face" || e.name == "faces") &&
+        std::any_of(elements.begin() + static_cast<std::ptrdiff_t>(k) + 1, elements.end(), [&](const Ply_element& later) {
+          return std::any_of(later.properties.begin(), later.properties.end(), long_list);
+        });
+    auto cut_short_before_lists = [&](std::size_t j, const Ply_property& p) {
+      return fail(0, "item " + std::to_string(j) + " of element \"" + e.name + "\" ends before its property \"" + p.name +
+                         "\" can be read, and a later element has lists");
+    };
+    for(std::size_t j = 0; j < e.count; ++j)
+      for(const Ply_property& p : e.properties) {
+        double value;
+        const bool ok = previous_ply_value(in, header.format, p.list ? p.count_type : p.type, value);
+        if(!ok && faces_then_lists) return cut_short_before_lists(j, p);
+        if(!ok && !p.list)
+          return scan;
+        if(!ok)
+          return fail(0, "the length of list \"" + p.name + "\" of item " + std::to_string(j) + " of element \"" +
+                             e.name + "\" cannot be read");
+        if(!p.list)
+          continue;
+        if(value < 0 || value * static_cast<double>(header.format == 0 ? 2 : ply_size(p.type)) >
+                            static_cast<double>(file_size + 1))
+          return fail(0, "item " + std::to_string(j) + " of element \"" + e.name + "\" has a list \"" + p.name +
+                             "\" of " + std::to_string(static_cast<long long>(value)) + " values, " +
+                             (value < 0 ? "a negative length" : "more than the file can hold"));
+        for(std::size_t i = 0, n = static_cast<std::size_t>(value); i < n; ++i)
+          if(!previous_ply_value(in, header.format, p.type, value))
+            return faces_then_lists ? cut_short_before_lists(j, p) : scan;
+      }
+  }
+  return scan;
+}
+
+// What reading a PLY file answers: the soup, or the message and line of the refusal.
+struct Ply_answer {
+  bool accepted = false;
+  std::string message;
+  std::size_t line = 0;
+  std::vector<std::array<double, 3>> points;
+  Obj_polygons polygons;
+};
+
+// The answer of read_triangle_mesh() before issue #20: the previous scanner,
+// then CGAL's read_PLY().
+Ply_answer previous_ply_answer(const std::string& content)
+{
+  Ply_answer answer;
+  const diffuv::internal::Text_mesh_scan scan = previous_ply_scan(content);
+  if(!scan.error.empty()) {
+    answer.message = scan.error;
+    answer.line = scan.error_line;
+    return answer;
+  }
+  std::istringstream in(content);
+  std::vector<Point_3> points;
+  try {
+    answer.accepted = CGAL::IO::read_PLY(in, points, answer.polygons, CGAL::parameters::verbose(false));
+  } catch(const std::exception& e) {
+    answer.message = std::string("not a valid PLY file (") + e.what() + ")";
+    return answer;
+  }
+  if(!answer.accepted)
+    answer.message = "not a valid PLY file";
+  for(const Point_3& p : points)
+    answer.points.push_back({p.x(), p.y(), p.z()});
+  return answer;
+}
+
+// The answer of scan_ply().
+Ply_answer ply_answer(const std::string& content)
+{
+  Ply_answer answer;
+  diffuv::internal::Polygon_soup soup;
+  const diffuv::internal::Text_mesh_scan scan = diffuv::internal::scan_ply(content, content.size(), soup);
+  answer.accepted = scan.error.empty() && soup.complete;
+  answer.message = !scan.error.empty() ? scan.error : soup.complete ? "" : "not a valid PLY file";
+  answer.line = scan.error_line;
+  answer.points = std::move(soup.points);
+  answer.polygons = std::move(soup.polygons);
+  return answer;
+}
+
+// Expects scan_ply() to answer `content` as the previous reader did;
+// returns whether it is accepted.
+bool expect_ply_read_as_cgal(const std::string& content, const std::string& what)
+{
+  const Ply_answer now = ply_answer(content);
+  const Ply_answer before = previous_ply_answer(content);
+  EXPECT_EQ(now.accepted, before.accepted) << what;
+  // A list whose length CGAL's reader could not read has the length of
+  // uninitialised memory: the previous path then said "not a valid PLY
+  // file", or passed on the exception of a vector sized to that garbage
+  // (whichever the stack held). Both refuse; scan_ply() says the former.
+  const bool garbage_length = now.message == "not a valid PLY file" &&
+                              (before.message == "not a valid PLY file (vector::_M_default_append)" ||
+                               before.message == "not a valid PLY file (std::bad_alloc)");
+  if(!garbage_length)
+    EXPECT_EQ(now.message, before.message) << what;
+  EXPECT_EQ(now.line, before.line) << what;
+  if(now.accepted && before.accepted) {
+    // Bit for bit: the same double, and the same sign of a zero.
+    EXPECT_EQ(now.points.size(), before.points.size()) << what;
+    EXPECT_TRUE(now.points.size() == before.points.size() &&
+                std::memcmp(now.points.data(), before.points.data(), now.points.size() * sizeof(now.points[0])) == 0)
+      << what;
+    EXPECT_TRUE(now.polygons == before.polygons) << what;
+  }
+  return before.accepted;
+}
+
+// A soup written as PLY by hand, in a style: the format, the types of the
+// coordinates and of the index lists, and what else the file holds.
+struct Ply_style {
+  int format = 0; // 0 ascii, 1 binary little-endian, 2 binary big-endian
+  Ply_type coordinate = Ply_type::float64;
+  Ply_type count = Ply_type::uint8;
+  Ply_type index = Ply_type::int32;
+  const char* indices = "vertex_indices";
+  bool extras = false; // normals, colours, labels, texture lists, an edge element, comments
+  bool crlf = false;   // text: CRLF line ends
+};
+
+const char* ply_type_name(Ply_type type)
+{
+  static const char* const names[8] = {"char", "uchar", "short", "ushort", "int", "uint", "float", "double"};
+  return names[static_cast<int>(type)];
+}
+
+// Appends `value` as a value of `type`: text with 17 digits, or binary.
+void put_ply_value(std::string& out, int format, Ply_type type, double value)
+{
+  if(format == 0) {
+    std::ostringstream s;
+    s << std::setprecision(17) << value << ' ';
+    out += s.str();
+    return;
+  }
+  auto put = [&](auto t) {
+    unsigned char b[sizeof t];
+    std::memcpy(b, &t, sizeof t);
+    if(format == 2)
+      std::reverse(b, b + sizeof t);
+    out.append(reinterpret_cast<const char*>(b), sizeof t);
+  };
+  switch(type) {
+    case Ply_type::int8: put(static_cast<std::int8_t>(value)); break;
+    case Ply_type::uint8: put(static_cast<std::uint8_t>(value)); break;
+    case Ply_type::int16: put(static_cast<std::int16_t>(value)); break;
+    case Ply_type::uint16: put(static_cast<std::uint16_t>(value)); break;
+    case Ply_type::int32: put(static_cast<std::int32_t>(value)); break;
+    case Ply_type::uint32: put(static_cast<std::uint32_t>(value)); break;
+    case Ply_type::float32: put(static_cast<float>(value)); break;
+    case Ply_type::float64: put(value); break;
+  }
+}
+
+std::string ply_text(const std::vector<Point_3>& points, const Obj_polygons& polygons, const Ply_style& style)
+{
+  static const char* const formats[3] = {"ascii", "binary_little_endian", "binary_big_endian"};
+  const char* const end = style.crlf ? "\r\n" : "\n";
+  const bool text = style.format == 0;
+  std::ostringstream h;
+  h << "ply" << end << "format " << formats[style.format] << " 1.0" << end;
+  if(style.extras) h << "comment written by hand" << end << "obj_info a test" << end;
+  h << "element vertex " << points.size() << end;
+  for(const char* c : {"x", "y", "z"})
+    h << "property " << ply_type_name(style.coordinate) << " " << c << end;
+  if(style.extras)
+    h << "property float nx" << end << "property float ny" << end << "property float nz" << end
+      << "property uchar red" << end << "property uchar green" << end << "property uchar blue" << end
+      << "property int label" << end << "comment between properties" << end;
+  h << "element face " << polygons.size() << end;
+  if(style.extras) h << "property uchar red" << end << "property list uchar float texcoord" << end;
+  h << "property list " << ply_type_name(style.count) << " " << ply_type_name(style.index) << " " << style.indices
+    << end;
+  if(style.extras) h << "property ushort segment" << end << "element edge 1" << end << "property int vertex1" << end
+                     << "property int vertex2" << end;
+  h << "end_header" << end;
+  std::string out = h.str();
+  for(std::size_t i = 0; i < points.size(); ++i) {
+    for(int c = 0; c < 3; ++c) put_ply_value(out, style.format, style.coordinate, points[i][c]);
+    if(style.extras) {
+      for(int c = 0; c < 3; ++c) put_ply_value(out, style.format, Ply_type::float32, 0.25 * c);
+      for(int c = 0; c < 3; ++c) put_ply_value(out, style.format, Ply_type::uint8, (i * 7 + c) % 256);
+      put_ply_value(out, style.format, Ply_type::int32, -static_cast<double>(i));
+    }
+    if(text) out += end;
+  }
+  for(std::size_t j = 0; j < polygons.size(); ++j) {
+    if(style.extras) {
+      put_ply_value(out, style.format, Ply_type::uint8, j % 256);
+      put_ply_value(out, style.format, Ply_type::uint8, 2);
+      put_ply_value(out, style.format, Ply_type::float32, 0.5);
+      put_ply_value(out, style.format, Ply_type::float32, 0.75);
+    }
+    put_ply_value(out, style.format, style.count, static_cast<double>(polygons[j].size()));
+    for(std::size_t i : polygons[j]) put_ply_value(out, style.format, style.index, static_cast<double>(i));
+    if(style.extras) put_ply_value(out, style.format, Ply_type::uint16, j % 7);
+    if(text) out += end;
+  }
+  if(style.extras) {
+    put_ply_value(out, style.format, Ply_type::int32, 0);
+    put_ply_value(out, style.format, Ply_type::int32, 1);
+    if(text) out += end;
+  }
+  return out;
+}
+
+// The styles the tests write: CGAL's writer's two (text with 17 digits, and
+// little-endian binary), and six by hand.
+std::vector<std::string> ply_texts(const std::vector<Point_3>& points, const Obj_polygons& polygons)
+{
+  std::vector<std::string> texts;
+  for(bool binary : {false, true}) {
+    std::ostringstream out;
+    CGAL::IO::set_mode(out, binary ? CGAL::IO::BINARY : CGAL::IO::ASCII);
+    CGAL::IO::write_PLY(out, points, polygons, CGAL::parameters::stream_precision(17));
+    texts.push_back(out.str());
+  }
+  Ply_style style;
+  style.format = 2; // big-endian, doubles, uchar and int
+  texts.push_back(ply_text(points, polygons, style));
+  style.coordinate = Ply_type::float32; // big-endian floats, 32-bit lengths, uint indices
+  style.count = Ply_type::int32;
+  style.index = Ply_type::uint32;
+  style.indices = "vertex_index";
+  texts.push_back(ply_text(points, polygons, style));
+  style = Ply_style();
+  style.format = 1; // little-endian floats with extras, ushort lengths
+  style.coordinate = Ply_type::float32;
+  style.count = Ply_type::uint16;
+  style.extras = true;
+  texts.push_back(ply_text(points, polygons, style));
+  style.format = 2;
+  texts.push_back(ply_text(points, polygons, style));
+  style.format = 0; // text, 17 digits read as floats, extras, CRLF, uint lengths
+  style.count = Ply_type::uint32;
+  style.crlf = true;
+  texts.push_back(ply_text(points, polygons, style));
+  style = Ply_style(); // text with char lengths and vertex_index
+  style.count = Ply_type::int8;
+  style.indices = "vertex_index";
+  texts.push_back(ply_text(points, polygons, style));
+  return texts;
+}
+
+TEST(IoReadMeshPly, OnePassReadsRealMeshesAsCgal)
+{
+  for(const char* name : {"cow.off", "nefertiti.off", "mushroom.off", "elephant.off", "man.off", "cube_quad.off",
+                          "torus_quad.off", "3torus.off"}) {
+    std::vector<Point_3> points;
+    Obj_polygons polygons;
+    read_off_soup(name, points, polygons);
+    const std::vector<std::string> texts = ply_texts(points, polygons);
+    for(std::size_t style = 0; style < texts.size(); ++style) {
+      const std::string what = std::string(name) + " style " + std::to_string(style);
+      EXPECT_TRUE(expect_ply_read_as_cgal(texts[style], what));
+      // And what was written: the points (as floats where written so) and polygons of the mesh.
+      const Ply_answer read = ply_answer(texts[style]);
+      ASSERT_EQ(read.points.size(), points.size()) << what;
+      EXPECT_TRUE(read.polygons == polygons) << what;
+    }
+  }
+  // CGAL's own PLY files.
+  for(const char* name : {"colored_tetra.ply", "sphere.ply", "b9.ply"})
+    EXPECT_TRUE(expect_ply_read_as_cgal(diffuv_test::file_content(diffuv_test::data_path(std::string("meshes/") + name)),
+                                        name));
+}
+
+// The quirks of CGAL's reader (libstdc++'s streams, its choice of
+// properties), one by one.
+TEST(IoReadMeshPly, OnePassKeepsCgalsQuirks)
+{
+  auto head = [](const std::string& format, const std::string& vertex, const std::string& face) {
+    return "ply\nformat " + format + " 1.0\nelement vertex 3\n" + vertex + "element face 1\n" + face + "end_header\n";
+  };
+  const std::string xyz = "property double x\nproperty double y\nproperty double z\n";
+  const std::string fxyz = "property float x\nproperty float y\nproperty float z\n";
+  const std::string list = "property list uchar int vertex_indices\n";
+  const std::string text = head("ascii", xyz, list);
+  const std::string ftext = head("ascii", fxyz, list);
+  const std::string points = "0 0 0\n1 0 0\n0 1 0\n";
+  const std::string tri = points + "3 0 1 2\n";
+  auto with = [&](const std::string& list_line, const std::string& face) {
+    return head("ascii", xyz, list_line) + points + face;
+  };
+  std::vector<std::string> contents = {
+    text + tri, ftext + tri, text + points, text, text + tri + "trailing words\n", text + tri.substr(0, tri.size() - 1),
+    // numbers: >> double, >> float
+    text + "1e-310 0 0\n1e-400 -1e-400 -0\n0 1 0\n3 0 1 2\n", text + "1e999 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
+    text + "+1 +.5 +5.e+1\n1 0 0\n0 1 0\n3 0 1 2\n", text + "1-2-3\n1 0 0\n0 1 0\n3 0 1 2\n",
+    text + "0x10 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", text + "nan 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
+    text + "inf 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", text + "1e 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
+    text + "1.5.3 0\n1 0 0\n0 1 0\n3 0 1 2\n", text + ". 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
+    text + "1,5 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", text + "1e5x 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
+    text + "0.1000000000000000055511151231257827021181583404541015625 0." + std::string(800, '1') + " 1" +
+      std::string(400, '0') + "e-400\n1 0 0\n0 1 0\n3 0 1 2\n",
+    ftext + "0.1 0.2 0.30000001192092896\n1 0 0\n0 1 0\n3 0 1 2\n",
+    ftext + "3.4028235e38 -3.4028235e38 1e-46\n1 0 0\n0 1 0\n3 0 1 2\n", ftext + "3.40282357e38 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
+    ftext + "1e39 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", ftext + "1e-40 1.00000001 16777217\n1 0 0\n0 1 0\n3 0 1 2\n",
+    ftext + "0.1000000000000000055511151231257827021181583404541015625 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
+    // indices and lengths: >> into their types
+    text + points + "3 +0 +1 +2\n", text + points + "+3 0 1 2\n", text + points + "3 0 1 -1\n",
+    text + points + "3 0 1 2147483648\n", text + points + "3 0 1 0x1\n", text + points + "3 0 1 1.5\n",
+    text + points + "3\t0\v1\f2\r\n", text + points + "4 0 1 2\n", text + points + "2 0 1 2\n", text + points + "0\n",
+    text + points + "300 0 1 2\n", text + points + "259 0 1 2\n", text + points + "-253 0 1 2\n",
+    text + points + "-1 0 1 2\n", text + points + "3 0 1 2 3 4 5\n",
+    with("property list uint int vertex_indices\n", "3 0 1 2\n"),
+    with("property list uint uint vertex_indices\n", "3 0 1 4294967295\n"),
+    with("property list uint uint vertex_indices\n", "3 0 1 -1\n"),
+    with("property list uint uint vertex_indices\n", "3 0 1 -4294967295\n"),
+    with("property list uint uint vertex_indices\n", "3 0 1 4294967296\n"),
+    with("property list int int vertex_indices\n", "-3 0 1 2\n"),
+    with("property list int int vertex_indices\n", "99999 0 1 2\n"),
+    with("property list int int vertex_indices\n", "3 0 1\n"), with("property list int int vertex_indices\n", "x\n"),
+    with("property list int int vertex_indices\n", ""), with("property list uint int vertex_indices\n", "-1 0 1 2\n"),
+    with("property list char int vertex_indices\n", "200 0 1 2\n"),
+    with("property list char int vertex_indices\n", "-1 0 1 2\n"),
+    with("property list char int vertex_indices\n", "259 0 1 2\n"),
+    with("property list short int vertex_indices\n", "-1 0 1 2\n"),
+    with("property list short int vertex_indices\n", "65539 0 1 2\n"),
+    with("property list ushort int vertex_indices\n", "-65533 0 1 2\n"),
+    with("property list ushort int vertex_indices\n", "-1 0 1 2\n"),
+    with("property list float int vertex_indices\n", "3 0 1 2\n"),
+    with("property list int8 int32 vertex_indices\n", "3 0 1 2\n"),
+    // which property holds the indices
+    with("property list uchar int vertex_index\n", "3 0 1 2\n"),
+    with("property list uchar uint vertex_indices\n", "3 0 1 2\n"),
+    with("property list uchar short vertex_indices\n", "3 0 1 2\n"),
+    with("property list uchar short vertex_indices\nproperty list uchar int vertex_index\n", "3 0 1 2 3 2 1 0\n"),
+    with("property list uchar int vertex_index\nproperty list uchar int vertex_indices\n", "3 0 1 2 3 2 1 0\n"),
+    with("property list uchar int vertex_indices\nproperty list uchar int vertex_indices\n", "3 0 1 2 3 2 1 0\n"),
+    with("property int vertex_indices\nproperty list uchar int vertex_index\n", "7 3 0 1 2\n"),
+    with("property list uchar double vertex_indices\n", "3 0 1 2\n"), with("property list uchar int indices\n", "3 0 1 2\n"),
+    with("property int label\n" + list + "property uchar red\nproperty uchar green\nproperty uchar blue\n",
+         "5 3 0 1 2 255 0 0\n"),
+    with("property uchar r\nproperty uchar g\nproperty uchar b\n" + list, "1 2 3 3 0 1 2\n"),
+    with("property float red\nproperty uchar green\nproperty uchar blue\n" + list, "1 2 3 3 0 1 2\n"),
+    with("property uchar red\nproperty uchar green\nproperty float blue\n" + list, "1 2 3 3 0 1 2\n"),
+    with(list + "property xyz unknown\n", "3 0 1 2 5\n"), with(list + "property list uchar xyz unknown\n", "3 0 1 2 5\n"),
+    with("property list uchar int vertex_indices extra words\n", "3 0 1 2\n"),
+    // vertices: which properties hold the coordinates
+    head("ascii", "property double x\nproperty double y\n", list) + "0 0\n1 0\n0 1\n3 0 1 2\n",
+    head("ascii", "property double z\nproperty double y\nproperty double x\n", list) + tri,
+    head("ascii", "property double x\nproperty double x\nproperty double y\nproperty double z\n", list) +
+      "0 9 0 0\n1 9 0 0\n0 9 1 0\n3 0 1 2\n",
+    head("ascii", "property double x\nproperty float y\nproperty double z\n", list) + "0.1 0.1 0.1\n1 0 0\n0 1 0\n3 0 1 2\n",
+    head("ascii", "property int x\nproperty double y\nproperty double z\n", list) + tri,
+    head("ascii", "property list uchar float x\nproperty double y\nproperty double z\n", list) + tri,
+    head("ascii", xyz + "property uchar red\nproperty uchar green\nproperty uchar blue\n", list) +
+      "0 0 0 1 2 3\n1 0 0 300 2 3\n0 1 0 1 2 3\n3 0 1 2\n",
+    head("ascii", xyz + "property uchar red\nproperty uchar green\nproperty short blue\n", list) + tri,
+    head("ascii", xyz + "property char c\nproperty uchar u\nproperty short s\nproperty ushort us\nproperty int i\n"
+                  "property uint ui\n", list) + "0 0 0 -1 1 -1 1 -1 1\n1 0 0 200 300 40000 70000 1 1\n0 1 0 1 1 1 1 1 1\n3 0 1 2\n",
+    head("ascii", xyz + "property list uint float normals\n", list) + "0 0 0 2 1 1\n1 0 0 0\n0 1 0 1 1\n3 0 1 2\n",
+    head("ascii", xyz + "property list uint float normals\n", list) + "0 0 0 9999999 1 1\n1 0 0 0\n0 1 0 1 1\n3 0 1 2\n",
+    // elements and the header
+    "ply\nformat ascii 1.0\nelement vertices 3\n" + xyz + "element faces 1\n" + list + "end_header\n" + tri,
+    "ply\nformat ascii 1.0\nelement face 1\n" + list + "element vertex 3\n" + xyz + "end_header\n3 0 1 2\n" + points,
+    "ply\nformat ascii 1.0\nelement vertex 2\n" + xyz + "element vertex 1\n" + xyz + "element face 1\n" + list +
+      "end_header\n" + tri,
+    "ply\nformat ascii 1.0\nelement vertex 3\n" + xyz + "element face 1\n" + list + "element face 1\n" + list +
+      "end_header\n" + tri + "3 2 1 0\n",
+    "ply\nformat ascii 1.0\nelement vertex 3\n" + xyz + "element face 1\n" + list + "element face 1\n" +
+      "property list uchar short vertex_indices\nend_header\n" + tri + "3 2 1 0\n",
+    "ply\nformat ascii 1.0\nelement vertex 3\nelement face 1\n" + list + "end_header\n3 0 1 2\n",
+    "ply\nformat ascii 1.0\nelement vertex 3\n" + xyz + "element face 1\nend_header\n" + points,
+    "ply\nformat ascii 1.0\nelement vertex 3\n" + xyz + "element face 1\n" + list +
+      "element halfedge 1\nproperty uint source\nproperty uint target\nproperty float u\nproperty float v\nend_header\n" +
+      tri + "0 1 0.5 0.5\n",
+    "ply\nformat ascii 1.0\nelement vertex 3\n" + xyz + "element face 1\n" + list +
+      "element halfedge 1\nproperty int source\nproperty uint target\nend_header\n" + tri + "0 1\n",
+    "ply\nformat ascii 1.0\nelement vertex 3\n" + xyz + "element face 1\n" + list +
+      "element halfedge 1\nproperty uint source\nproperty uint target\nend_header\n" + tri + "0 1\n",
+    "ply\nformat ascii 1.0\nelement vertex 3\n" + xyz + "element face 1\n" + list +
+      "element thing 2\nproperty list uint int values\nend_header\n" + tri + "1 5 2 6 7\n",
+    "ply\nformat ascii 1.0\nelement vertex 3\n" + xyz + "element face 1\n" + list +
+      "element thing 2\nproperty list uint int values\nend_header\n" + tri + "1 5 2 6\n",
+    "ply\nformat ascii 1.0\nelement vertex 3\n" + xyz + "element face 1\n" + list +
+      "element thing 1\nproperty list uint int values\nend_header\n" + points + "3 0 1\n",
+    "ply\nformat ascii 1.0\nelement vertex 3\n" + xyz + "element face 1\n" +
+      "property list uchar float vertex_indices\nelement thing 1\nproperty list uint int values\nend_header\n" + tri +
+      "1 5\n",
+    "ply\nformat ascii 1.0\nelement vertex 3\n" + xyz + "element face 1\n" +
+      "property list uchar float vertex_indices\nelement thing 1\nproperty list uint int values\nend_header\n" + tri +
+      "99999 5\n",
+    "ply\nformat ascii 1.0\nelement vertex 3\n" + xyz + "element face 1\n" + list + "element empty 5\nend_header\n" + tri,
+    "ply\nformat ascii 1.0\nelement vertex 3\n" + xyz + "element face 1\n" + list + "element big 99999\nend_header\n" + tri,
+    "ply\nformat ascii 1.0\nelement vertex 3\nproperty double x\nelement face 1\n" + list + "end_header\n0\n1\n2\n3 0 1 2\n",
+    "ply\r\nformat ascii 1.0\r\nelement vertex 3\r\n" + std::string("property double x\r\nproperty double y\r\n") +
+      "property double z\r\nelement face 1\r\n" + "property list uchar int vertex_indices\r\nend_header\r\n" +
+      "0 0 0\r\n1 0 0\r\n0 1 0\r\n3 0 1 2\r\n",
+    "ply\nformat ascii 1.0\ncomment a\nobj_info b\n\nelement vertex 3\n" + xyz + "element face 1\n" + list +
+      "end_header\n" + tri,
+    "ply\nformat ascii 1.0\ncomment a\nobj_info b\nunknown line\nelement vertex 3\n" + xyz + "comment c\nelement face 1\n" +
+      list + "end_header\n" + tri,
+    "ply\nformat ascii 1.0\nelement vertex 3\n" + xyz + "element face 1\n" + list + "end_header", "ply\nformat ascii 1.0\n",
+    "ply\nformat ascii 1.0\nelement vertex 0\nelement face 0\nend_header", "ply\nformat ascii 1.0\nelement vertex 0\nend_header\n",
+    "ply\nformat ascii 1.0\nelement vertex 3\n" + xyz + "element face 1\n" + list + "end_head\n" + tri,
+    "ply\nformat ascii 1.0\nelement vertex 3\n" + xyz + "element face 1\n" + list, "ply\n", "ply",
+    "ply\nformat ascii\n" + text.substr(17) + tri, "ply\nform ascii 1.0\n" + text.substr(17) + tri,
+    "ply\nformat binary 1.0\n" + text.substr(17) + tri, "plyx\n" + text.substr(4) + tri, " ply\n" + text.substr(4) + tri,
+    "ply\nformat ascii 1.0\nproperty double x\nelement vertex 3\n" + xyz + "element face 1\n" + list + "end_header\n" + tri,
+    "ply\nformat ascii 1.0\nelement vertex 3 4\n" + xyz + "element face 1\n" + list + "end_header\n" + tri,
+    "ply\nformat ascii 1.0\nelement vertex -3\n" + xyz + "element face 1\n" + list + "end_header\n" + tri,
+    "ply\nformat ascii 1.0\nelement vertex +3\n" + xyz + "element face 1\n" + list + "end_header\n" + tri,
+    "ply\nformat ascii 1.0\nelement vertex\n" + xyz + "element face 1\n" + list + "end_header\n" + tri,
+    "ply\nformat ascii 1.0\nelement vertex 3\nproperty double\n" + xyz + "element face 1\n" + list + "end_header\n" + tri,
+    "ply\nformat ascii 1.0\nelement vertex 3\n" + xyz + "element face 1\nproperty list uchar int\nend_header\n" + tri,
+  };
+  // Binary: little- and big-endian, floats and doubles, lengths of each size.
+  for(int format : {1, 2})
+    for(Ply_type coordinate : {Ply_type::float32, Ply_type::float64})
+      for(Ply_type count : {Ply_type::int8, Ply_type::uint8, Ply_type::int16, Ply_type::uint16, Ply_type::int32,
+                            Ply_type::uint32})
+        for(Ply_type index : {Ply_type::int32, Ply_type::uint32}) {
+          const std::string header = head(format == 1 ? "binary_little_endian" : "binary_big_endian",
+                                          "property " + std::string(ply_type_name(coordinate)) + " x\nproperty " +
+                                            ply_type_name(coordinate) + " y\nproperty " + ply_type_name(coordinate) +
+                                            " z\n",
+                                          "property list " + std::string(ply_type_name(count)) + " " +
+                                            ply_type_name(index) + " vertex_indices\n");
+          std::string data;
+          for(double v : {0.1, 0., 0., 1., -0., 0., 0., 1e-40, 3.5}) put_ply_value(data, format, coordinate, v);
+          std::string face;
+          put_ply_value(face, format, count, 3);
+          for(double i : {0., 1., 2.}) put_ply_value(face, format, index, i);
+          contents.push_back(header + data + face);
+          contents.push_back(header + data + face.substr(0, face.size() - 1)); // cut short
+          contents.push_back(header + data);
+          contents.push_back(header + data + face + "more");
+          std::string negative;
+          put_ply_value(negative, format, count, -1);
+          contents.push_back(header + data + negative + face.substr(face.size() - 12));
+          std::string large;
+          put_ply_value(large, format, count, 200);
+          contents.push_back(header + data + large + face.substr(face.size() - 12));
+        }
+  // A binary header ending in CRLF, and a NaN.
+  std::string binary_tri = head("binary_little_endian", fxyz, list);
+  for(float v : {0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 0.f, 1.f, std::numeric_limits<float>::quiet_NaN()})
+    put_ply_value(binary_tri, 1, Ply_type::float32, static_cast<double>(v));
+  put_ply_value(binary_tri, 1, Ply_type::uint8, 3);
+  for(double i : {0., 1., 2.}) put_ply_value(binary_tri, 1, Ply_type::int32, i);
+  contents.push_back(binary_tri);
+  std::string crlf = binary_tri;
+  crlf.replace(crlf.find("end_header\n"), 11, "end_header\r\n");
+  contents.push_back(crlf);
+
+  std::size_t accepted = 0;
+  for(std::size_t k = 0; k < contents.size(); ++k)
+    accepted += expect_ply_read_as_cgal(contents[k], "case " + std::to_string(k) + ":\n" + contents[k]) ? 1 : 0;
+  EXPECT_GT(accepted, 40u);
+}
+
+// PLY copies of small meshes in the styles of ply_texts(), damaged one to
+// four times: header words replaced (by types, names, keywords, counts),
+// header lines added, removed or swapped, words of the data replaced (by
+// numbers at the edges of what the streams read), bytes changed, added or
+// removed, CRLF line ends, the file cut short.
+TEST(IoReadMeshPly, OnePassAnswersAsCgalOnMutatedFiles)
+{
+  std::vector<std::string> bases;
+  for(const char* name : {"tetrahedron.off", "cube_quad.off", "octahedron.off", "star.off", "hole.off"}) {
+    std::vector<Point_3> points;
+    Obj_polygons polygons;
+    read_off_soup(name, points, polygons);
+    for(const std::string& text : ply_texts(points, polygons)) bases.push_back(text);
+  }
+  const std::vector<std::string> header_words = {
+    "char", "uchar", "short", "ushort", "int", "uint", "float", "double", "int8", "uint8", "int16", "uint16", "int32",
+    "uint32", "float32", "float64", "list", "property", "element", "comment", "obj_info", "end_header", "vertex",
+    "vertices", "face", "faces", "halfedge", "edge", "vertex_indices", "vertex_index", "x", "y", "z", "red", "green",
+    "blue", "r", "g", "b", "source", "target", "u", "v", "ascii", "binary_little_endian", "binary_big_endian", "format",
+    "0", "1", "2", "3", "7", "-1", "+2", "99999", "1e3", "", "xyz"};
+  const std::vector<std::string> header_lines = {
+    "property list uint int vertex_indices", "property list uchar uint vertex_index", "property float x",
+    "property double y", "property uchar red", "property list int int values", "element thing 2", "element face 1",
+    "element vertex 2", "comment c", "obj_info", "", "end_header", "property list ushort float texcoord",
+    "property int source", "element halfedge 1"};
+  const std::vector<std::string> data_words = {
+    "inf", "-inf", "nan", "1e999", "-1e999", "1e-400", "4.9e-324", "1e-46", "3.5e38", "0x1p3", "+1", "-0", "0", "-1",
+    "-3", "1-2", "1.5.3", "1e", "e5", ".", "-", ".5", "5.", "1e5x", "99999999999", "2147483647", "2147483648",
+    "4294967295", "4294967296", "-4294967295", "300", "-253", "65536", "-65535", "200", "abc", "#", "\t", "\r",
+    std::string(1, '\0'), "\v", std::string(300, '7'), "1e308", "1.8e308", "+-1", "1E5", "00012", "+.5", "1,5",
+    "\xff", "1 2", "3 0 1 2"};
+  std::mt19937 random(20261205);
+  auto pick = [&](std::size_t n) { return static_cast<std::size_t>(random() % n); };
+  std::size_t accepted = 0;
+  const std::size_t trials = 5000;
+  for(std::size_t trial = 0; trial < trials; ++trial) {
+    std::string content = bases[pick(bases.size())];
+    const std::size_t header_end = content.find("end_header") + 10;
+    std::vector<std::string> header;
+    {
+      std::istringstream in(content.substr(0, header_end));
+      for(std::string line; std::getline(in, line);) header.push_back(line);
+    }
+    std::string data = content.substr(header_end);
+    const bool text = content.find("format ascii") != std::string::npos;
+    bool cut = false;
+    for(std::size_t damage = 1 + pick(4); damage > 0; --damage) {
+      std::string& line = header[pick(header.size())];
+      switch(pick(10)) {
+        case 0: case 1: { // a header word replaced
+          std::size_t start = 0;
+          for(std::size_t w = pick(5); w > 0 && line.find(' ', start) != std::string::npos; --w)
+            start = line.find(' ', start) + 1;
+          const std::size_t stop = std::min(line.find(' ', start), line.size());
+          line.replace(start, stop - start, header_words[pick(header_words.size())]);
+          break;
+        }
+        case 2: // a header line added
+          header.insert(header.begin() + static_cast<std::ptrdiff_t>(1 + pick(header.size())),
+                        header_lines[pick(header_lines.size())]);
+          break;
+        case 3: // a header line removed or swapped
+          if(header.size() > 3) {
+            const std::size_t at = 2 + pick(header.size() - 2);
+            if(pick(2)) header.erase(header.begin() + static_cast<std::ptrdiff_t>(at));
+            else std::swap(header[at], header[2 + pick(header.size() - 2)]);
+          }
+          break;
+        case 4: case 5: { // a word of the data replaced (text), or bytes (binary)
+          if(data.size() < 2) break;
+          std::size_t start = pick(data.size());
+          if(text) {
+            while(start > 0 && !diffuv::internal::is_blank(data[start - 1])) --start;
+            std::size_t stop = start;
+            while(stop < data.size() && !diffuv::internal::is_blank(data[stop])) ++stop;
+            data.replace(start, stop - start, data_words[pick(data_words.size())]);
+          } else {
+            const char bytes[] = {'\0', '\x01', '\x03', '\x7f', '\x80', '\xff'};
+            for(std::size_t n = 1 + pick(4); n > 0 && start < data.size(); --n, ++start)
+              data[start] = pick(2) ? bytes[pick(sizeof bytes)] : static_cast<char>(pick(256));
+          }
+          break;
+        }
+        case 6: { // a byte of the data inserted or removed
+          const std::size_t at = pick(data.size() + 1);
+          if(pick(2) || at == data.size()) data.insert(at, 1, static_cast<char>(pick(2) ? pick(256) : ' '));
+          else data.erase(at, 1);
+          break;
+        }
+        case 7: // a character of the header changed
+          if(!line.empty()) line[pick(line.size())] = " \t\r0123456789-+.xe"[pick(18)];
+          break;
+        case 8: // CRLF
+          for(std::string& l : header) l += "\r";
+          if(text) {
+            std::string crlf;
+            for(char c : data) crlf += c == '\n' ? std::string("\r\n") : std::string(1, c);
+            data = crlf;
+          }
+          break;
+        default: cut = true; break;
+      }
+    }
+    content.clear();
+    for(const std::string& line : header) content += line + "\n";
+    content += data.substr(data.empty() || data[0] != '\n' ? 0 : 1);
+    if(cut) content.resize(pick(content.size() + 1));
+    accepted += expect_ply_read_as_cgal(content, "trial " + std::to_string(trial)) ? 1 : 0;
+    if(::testing::Test::HasFailure()) {
+      ADD_FAILURE() << "first difference on:\n" << content;
+      break;
+    }
+  }
+  // Both answers occur often enough for the comparison to mean something.
+  EXPECT_GT(accepted, trials / 10);
+  EXPECT_LT(accepted, trials - trials / 10);
+}
+
+// The numbers of text PLY as libstdc++'s `>>` reads them into each type:
+// the same success, value and stop, on words from an alphabet of what
+// numbers are made of.
+TEST(IoReadMeshPly, NumbersAsTheStreamsReadThem)
+{
+  std::mt19937 random(20261206);
+  auto pick = [&](std::size_t n) { return static_cast<std::size_t>(random() % n); };
+  const std::string alphabet = "0123456789012345678901234567890123456789+-.eE x\t\n";
+  auto check = [&](const std::string& word, auto read) {
+    using T = decltype(read);
+    T stream_value{}, value{};
+    std::istringstream in(word);
+    const bool stream_ok = static_cast<bool>(in >> stream_value);
+    in.clear();
+    const auto stream_stop = static_cast<std::size_t>(in.tellg());
+    const char* at = word.data();
+    bool ok;
+    if constexpr(std::is_floating_point_v<T>)
+      ok = diffuv::internal::extract_floating(at, word.data() + word.size(), value);
+    else
+      ok = diffuv::internal::extract_integer(at, word.data() + word.size(), value);
+    EXPECT_EQ(ok, stream_ok) << "\"" << word << "\" as " << typeid(T).name();
+    if(ok && stream_ok) {
+      EXPECT_EQ(std::memcmp(&value, &stream_value, sizeof(T)), 0) << "\"" << word << "\" as " << typeid(T).name();
+      EXPECT_EQ(static_cast<std::size_t>(at - word.data()), stream_stop) << "\"" << word << "\"";
+    }
+  };
+  std::vector<std::string> words = {"-65535", "-65536", "65535", "65536", "-4294967295", "-4294967296", "4294967295",
+                                    "-32768", "-32769", "32767", "32768", "-2147483648", "-2147483649", "2147483647",
+                                    "3.4028235e38", "3.40282357e38", "1e-46", "1e-45", "1e-400", "1e309", "0x10",
+                                    "+", "-", "", " ", "+-1", "00000000000000000000001", "99999999999999999999"};
+  for(int k = 0; k < 20000; ++k) {
+    std::string word;
+    for(std::size_t n = 1 + pick(12); n > 0; --n) word += alphabet[pick(alphabet.size())];
+    words.push_back(word);
+  }
+  for(const std::string& word : words) {
+    check(word, short());
+    check(word, static_cast<unsigned short>(0));
+    check(word, int());
+    check(word, 0u);
+    check(word, float());
+    check(word, double());
+    if(::testing::Test::HasFailure())
+      break;
+  }
 }
 
 // ---------------------------------------------------------------------------

@@ -13,10 +13,10 @@
 // mesh (vertex 0 is the first vertex of the file); only a vertex index that
 // is out of range is quoted as written in the file (from 1 in OBJ).
 //
-// The pieces are in io/internal/: the OFF and OBJ readers (one pass that
-// reads the soup as CGAL's readers would and finds the lines), the PLY
-// scanner (what CGAL's reader trusts, checked before it reads), the checks
-// of the polygon soup, and its triangulation.
+// The pieces are in io/internal/: the OFF, OBJ and PLY readers (one pass
+// that reads the soup as CGAL's readers would, finds the lines of OFF and
+// OBJ and what CGAL's PLY reader would not survive), the checks of the
+// polygon soup, and its triangulation.
 #ifndef DIFFUV_IO_READ_MESH_H
 #define DIFFUV_IO_READ_MESH_H
 
@@ -29,7 +29,6 @@
 #include <diffuv/io/internal/polygon_soup_checks.h>
 #include <diffuv/io/internal/triangulate_polygons.h>
 
-#include <CGAL/IO/PLY.h>
 #include <CGAL/IO/STL.h>
 #include <CGAL/Polygon_mesh_processing/shape_predicates.h>
 #include <CGAL/boost/graph/properties.h>
@@ -105,8 +104,8 @@ inline const char* format_name(Mesh_format format)
 /// Reads a polygon mesh file (OFF, OBJ, PLY or STL, by extension, in any
 /// case) into a triangle mesh whose vertex i is the i-th point of the file.
 ///
-/// The file is read as a polygon soup (OFF and OBJ by diffuv's readers,
-/// which give what CGAL's readers give; PLY and STL by CGAL's) and checked
+/// The file is read as a polygon soup (OFF, OBJ and PLY by diffuv's readers,
+/// which give what CGAL's readers give; STL by CGAL's) and checked
 /// before the mesh is built: at least one face; finite coordinates; faces of
 /// at least three vertex indices, in range and distinct; a manifold,
 /// consistently oriented polygon mesh. Nothing is repaired, merged or
@@ -140,7 +139,7 @@ inline const char* format_name(Mesh_format format)
 ///   - "unknown mesh file extension ...", "the file name has no extension ..."
 ///   - "cannot open file", "the file is empty"
 ///   - "not a valid OFF file" (or OBJ, PLY, STL), with the problem in
-///     parentheses when it is known (OFF and OBJ)
+///     parentheses when it is known
 ///   - "the file has no face"
 ///   - "vertex I has a coordinate that is NaN or infinite"
 ///   - "vertex I has a coordinate of X, too large to compute with (beyond 1e60): rescale the mesh",
@@ -177,50 +176,42 @@ Mesh_read_report read_triangle_mesh(const std::string& path, TriangleMesh& mesh)
   if(file_size == 0)
     throw Input_error(path, 0, "the file is empty");
 
-  // OFF and OBJ are read in one pass of diffuv's own scanners, which give
-  // the soup and the lines of its elements; PLY and STL are read with CGAL's
-  // readers, PLY after its scanner checked what that reader takes on trust.
+  // OFF, OBJ and PLY are read in one pass of diffuv's own readers, which
+  // give the soup (and the lines of its elements in OFF and OBJ); STL is
+  // read with CGAL's reader.
   internal::Polygon_soup soup;
   internal::Text_mesh_scan text_scan;
-  if(format == Mesh_format::off || format == Mesh_format::obj) {
+  if(format != Mesh_format::stl) {
     internal::File_bytes bytes;
     if(!bytes.open(path))
       throw Input_error(path, 0, "cannot open file");
-    if(format == Mesh_format::off) {
-      text_scan = internal::scan_off(bytes.view(), false, &soup);
-      if(!text_scan.error.empty())
-        throw Input_error(path, text_scan.error_line, text_scan.error);
-    } else {
+    if(format == Mesh_format::obj) {
       // An OBJ file CGAL accepts may still have an index out of range, which
       // the checks below report in file order with the other problems.
       text_scan = internal::scan_obj(bytes.view(), soup);
+    } else {
+      text_scan = format == Mesh_format::off ? internal::scan_off(bytes.view(), false, &soup)
+                                             : internal::scan_ply(bytes.view(), file_size, soup);
+      if(!text_scan.error.empty())
+        throw Input_error(path, text_scan.error_line, text_scan.error);
     }
   }
 
   // The lines of elements, for messages: only the text formats have them.
   internal::Line_locator locate([&]() -> internal::Text_mesh_scan { return std::move(text_scan); });
-  if(format == Mesh_format::ply) {
-    const internal::Text_mesh_scan checked = internal::scan_ply(path, file_size);
-    if(!checked.error.empty())
-      throw Input_error(path, checked.error_line, checked.error);
-  }
 
-  // CGAL's stream readers of OFF and PLY print to std::cerr unless told not to.
+  // CGAL's STL reader prints to std::cerr unless told not to.
   std::vector<Point> points;
   std::vector<Polygon> polygons;
   bool read = false;
   try {
-    const auto np = CGAL::parameters::verbose(false);
-    switch(format) {
-      case Mesh_format::off:
-      case Mesh_format::obj:
-        read = soup.complete;
-        points.reserve(soup.points.size());
-        for(const auto& p : soup.points) points.emplace_back(p[0], p[1], p[2]);
-        polygons = std::move(soup.polygons);
-        break;
-      case Mesh_format::ply: read = CGAL::IO::read_PLY(path, points, polygons, np); break;
-      case Mesh_format::stl: read = CGAL::IO::read_STL(path, points, polygons, np); break;
+    if(format == Mesh_format::stl) {
+      read = CGAL::IO::read_STL(path, points, polygons, CGAL::parameters::verbose(false));
+    } else {
+      read = soup.complete;
+      points.reserve(soup.points.size());
+      for(const auto& p : soup.points) points.emplace_back(p[0], p[1], p[2]);
+      polygons = std::move(soup.polygons);
     }
   } catch(const std::exception& e) {
     throw Input_error(path, 0, "not a valid " + name + " file (" + e.what() + ")");

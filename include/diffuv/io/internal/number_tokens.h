@@ -12,6 +12,7 @@
 #include <string>
 #include <string_view>
 #include <system_error>
+#include <type_traits>
 #include <vector>
 
 namespace diffuv {
@@ -47,14 +48,18 @@ inline bool parse_number(std::string_view token, double& value)
   return !text.empty() && end == text.c_str() + text.size();
 }
 
-/// Reads a number from `at` as `std::istream >> double` reads it (libstdc++'s
-/// `num_get`, C locale), for readers that copy a stream-based reader without
-/// its stream: white space skipped, then the longest prefix of the form
-/// [+-]digits[.digits][(e|E)[+-]digits] taken ("1-2" is 1, then -2), which
-/// must convert whole; a value beyond the range of a double fails, one too
-/// small gives 0 or a subnormal. Moves `at` past what the stream consumes.
-inline bool extract_double(const char*& at, const char* end, double& value)
+/// Reads a number from `at` as `std::istream >> T` reads it for a floating
+/// point T (libstdc++'s `num_get`, C locale), for readers that copy a
+/// stream-based reader without its stream: white space skipped, then the
+/// longest prefix of the form [+-]digits[.digits][(e|E)[+-]digits] taken
+/// ("1-2" is 1, then -2), which must convert whole, straight to T (strtof for
+/// a float: no rounding through double); a value beyond the range of T
+/// fails, one too small gives 0 or a subnormal. Moves `at` past what the
+/// stream consumes.
+template <class T>
+bool extract_floating(const char*& at, const char* end, T& value)
 {
+  static_assert(std::is_same_v<T, float> || std::is_same_v<T, double>);
   const char* p = at;
   while(p < end && is_blank(*p))
     ++p;
@@ -89,16 +94,30 @@ inline bool extract_double(const char*& at, const char* end, double& value)
   // Too large or too small for from_chars: the stream keeps strtod's 0 or
   // subnormal, and fails on an infinity.
   const std::string text(start, p);
-  value = std::strtod(text.c_str(), nullptr);
+  if constexpr(std::is_same_v<T, float>)
+    value = std::strtof(text.c_str(), nullptr);
+  else
+    value = std::strtod(text.c_str(), nullptr);
   return std::isfinite(value);
 }
 
-/// Reads an integer from `at` as `std::istream >> int` reads it (libstdc++,
-/// C locale): white space skipped, an optional sign, decimal digits; fails
-/// without digits or beyond the range of an int. Moves `at` past what the
-/// stream consumes.
-inline bool extract_int(const char*& at, const char* end, int& value)
+/// `extract_floating()` for a double: what `>> double` takes.
+inline bool extract_double(const char*& at, const char* end, double& value)
 {
+  return extract_floating(at, end, value);
+}
+
+/// Reads an integer from `at` as `std::istream >> T` reads it (libstdc++,
+/// C locale): white space skipped, an optional sign, decimal digits ("0x10"
+/// is 0, then "x10"); fails without digits or beyond the range of T. A
+/// signed T is read through a long and checked against T's range; an
+/// unsigned one takes a minus sign as strtoul does ("-1" is the largest
+/// value, "-65535" is 1 for an unsigned short) within its range. Moves `at`
+/// past what the stream consumes.
+template <class T>
+bool extract_integer(const char*& at, const char* end, T& value)
+{
+  static_assert(std::is_integral_v<T> && sizeof(T) <= 4);
   const char* p = at;
   while(p < end && is_blank(*p))
     ++p;
@@ -106,18 +125,28 @@ inline bool extract_int(const char*& at, const char* end, int& value)
   if(p < end && (*p == '+' || *p == '-'))
     negative = *p++ == '-';
   const char* const digits = p;
-  long long magnitude = 0;
+  // The largest magnitude that fits, and the digits beyond it no longer matter.
+  const unsigned long long most = static_cast<unsigned long long>(std::numeric_limits<T>::max()) +
+                                  (std::is_signed_v<T> && negative ? 1 : 0);
+  unsigned long long magnitude = 0;
   for(; p < end && *p >= '0' && *p <= '9'; ++p)
-    if(magnitude <= std::numeric_limits<int>::max())
-      magnitude = magnitude * 10 + (*p - '0'); // past int's range the value no longer matters
+    if(magnitude <= most)
+      magnitude = magnitude * 10 + static_cast<unsigned long long>(*p - '0');
   at = p;
-  if(p == digits)
+  if(p == digits || magnitude > most)
     return false;
-  const long long signed_value = negative ? -magnitude : magnitude;
-  if(signed_value < std::numeric_limits<int>::min() || signed_value > std::numeric_limits<int>::max())
-    return false;
-  value = static_cast<int>(signed_value);
+  if constexpr(std::is_signed_v<T>)
+    value = static_cast<T>(negative ? -static_cast<long long>(magnitude) : static_cast<long long>(magnitude));
+  else
+    value = static_cast<T>(negative ? 0 - magnitude : magnitude); // modulo 2^bits, as strtoul
   return true;
+}
+
+/// Reads an integer from `at` as `std::istream >> int` reads it: see
+/// `extract_integer()`.
+inline bool extract_int(const char*& at, const char* end, int& value)
+{
+  return extract_integer(at, end, value);
 }
 
 /// Moves `at` as `std::istream::ignore(256, ' ')` does (libstdc++): past up

@@ -1,28 +1,31 @@
-// diffuv: the PLY scanner, shared by every reader of PLY files: the header
+// diffuv: the PLY reader, shared by every reader of PLY files: the header
 // (elements and their typed properties) and the values, as text or as
-// little- or big-endian binary. `scan_ply()` checks a file for what CGAL's
-// PLY reader does not survive, before it reads the mesh; `read_ply_paint()`
-// (read_paint.h) reads the colours and labels of the same elements.
+// little- or big-endian binary, read from the file's bytes. `scan_ply()`
+// reads the points and polygons of a mesh in one pass, as CGAL's PLY reader
+// reads them, and says why a file is bad, so that CGAL's reader is not
+// called (issue #20); `read_ply_paint()` (read_paint.h) reads the colours and
+// labels of the same elements.
 #ifndef DIFFUV_IO_INTERNAL_PLY_SCANNER_H
 #define DIFFUV_IO_INTERNAL_PLY_SCANNER_H
 
 #include <diffuv/io/internal/mesh_scan.h>
 #include <diffuv/io/internal/number_tokens.h>
 
-#include <CGAL/IO/io.h>
-
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <charconv>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
-#include <fstream>
 #include <istream>
 #include <iterator>
 #include <sstream>
+#include <streambuf>
 #include <string>
+#include <string_view>
 #include <system_error>
+#include <type_traits>
 #include <vector>
 
 namespace diffuv {
@@ -67,6 +70,7 @@ struct Ply_header {
   int format = 0; ///< 0 text, 1 little-endian, 2 big-endian
   std::vector<Ply_element> elements;
   std::size_t lines = 0; ///< lines read, the end_header line included
+  bool ended = false;    ///< the end_header line was read (else the header ran to the end of the file)
 };
 
 /// How a header is read. `cgal`: as CGAL's PLY reader (CGAL 5.5) reads it,
@@ -161,6 +165,7 @@ inline std::string read_ply_header(std::istream& in, std::uintmax_t file_size, P
         header.elements.back().properties.push_back(p);
       }
     } else if(keyword == "end_header") {
+      header.ended = true;
       break;
     } else if(!cgal && keyword != "comment" && keyword != "obj_info") {
       return fail(number, "unexpected header line \"" + text + "\"");
@@ -171,12 +176,39 @@ inline std::string read_ply_header(std::istream& in, std::uintmax_t file_size, P
   return std::string();
 }
 
+/// A stream over bytes in memory, for the header only: its lines are read
+/// with `std::getline` and `>>` as CGAL's reader reads them, and it says
+/// where the data start. The data are read without a stream.
+class Ply_header_buffer : public std::streambuf {
+public:
+  explicit Ply_header_buffer(std::string_view bytes)
+  {
+    char* first = const_cast<char*>(bytes.data()); // read only: the buffer has no put area
+    setg(first, first, first + bytes.size());
+  }
+  std::size_t offset() const { return static_cast<std::size_t>(gptr() - eback()); }
+};
+
+/// Reads the header at the start of `bytes` (see the stream version);
+/// `data_start` receives the offset of the first byte after it.
+inline std::string read_ply_header(std::string_view bytes, std::uintmax_t file_size, Ply_header_rules rules,
+                                   Ply_header& header, std::size_t& error_line, std::size_t& data_start)
+{
+  Ply_header_buffer buffer(bytes);
+  std::istream in(&buffer);
+  std::string problem = read_ply_header(in, file_size, rules, header, error_line);
+  data_start = buffer.offset();
+  return problem;
+}
+
 /// Reads the values of a PLY file after its header, as text or as little- or
-/// big-endian binary.
+/// big-endian binary, from the file's bytes.
 class Ply_value_reader {
 public:
+  /// \param data the bytes after the header
   /// \param line the line of the first value (text files)
-  Ply_value_reader(std::istream& in, int format, std::size_t line) : in_(in), format_(format), line_(line)
+  Ply_value_reader(std::string_view data, int format, std::size_t line)
+      : at_(data.data()), end_(data.data() + data.size()), format_(format), line_(line)
   {
     const std::uint16_t probe = 1;
     unsigned char first;
@@ -184,107 +216,171 @@ public:
     swap_ = (format == 2) == (first == 1); // big-endian file on a little-endian host, or the reverse
   }
 
+  /// True once every byte was read (what a stream's eof() says after a read that failed).
+  bool at_end() const { return at_ == end_; }
+
   /// Skips white space (text) and returns the line of the next value, 0 in binary.
   std::size_t start_item()
   {
     if(format_ != 0)
       return 0;
-    for(int c = in_.peek(); c != EOF && std::isspace(c); c = in_.peek())
-      if(in_.get() == '\n')
+    for(; at_ < end_ && is_blank(*at_); ++at_)
+      if(*at_ == '\n')
         ++line_;
     return line_;
   }
 
   /// Reads a value of type `type`; in text, the whole white-space separated
-  /// word must be a number. Returns false if it cannot.
+  /// word must be a number (`parse_number()`). Returns false if it cannot.
   bool read(Ply_type type, double& value)
   {
     if(format_ != 0)
       return read_binary(type, value);
     start_item();
-    std::string token;
-    for(int c = in_.peek(); c != EOF && !std::isspace(c); c = in_.peek())
-      token += static_cast<char>(in_.get());
-    return parse_number(token, value);
+    const char* const first = at_;
+    while(at_ < end_ && !is_blank(*at_))
+      ++at_;
+    return parse_number(std::string_view(first, static_cast<std::size_t>(at_ - first)), value);
   }
 
   /// Reads a value of type `type` as CGAL's PLY reader reads it: in text,
-  /// with `operator>>` into that type (8-bit values through 16-bit ones),
-  /// which stops at the first character that does not fit. Lines are not
-  /// counted.
+  /// as `operator>>` into that type reads it (8-bit values through 16-bit
+  /// ones, then cut to 8 bits), which stops at the first character that does
+  /// not fit; a float is read as a float, then widened. Lines are not counted.
   bool read_like_cgal(Ply_type type, double& value)
   {
     if(format_ != 0)
       return read_binary(type, value);
     switch(type) {
-      case Ply_type::int8: { short v; if(!(in_ >> v)) return false; value = static_cast<signed char>(v); return true; }
-      case Ply_type::uint8: { unsigned short v; if(!(in_ >> v)) return false; value = static_cast<unsigned char>(v); return true; }
-      case Ply_type::int16: { std::int16_t v; if(!(in_ >> v)) return false; value = v; return true; }
-      case Ply_type::uint16: { std::uint16_t v; if(!(in_ >> v)) return false; value = v; return true; }
-      case Ply_type::int32: { std::int32_t v; if(!(in_ >> v)) return false; value = v; return true; }
-      case Ply_type::uint32: { std::uint32_t v; if(!(in_ >> v)) return false; value = v; return true; }
-      default: { double v; if(!(in_ >> CGAL::IO::iformat(v))) return false; value = v; return true; }
+      case Ply_type::int8: return text<short, signed char>(value);
+      case Ply_type::uint8: return text<unsigned short, unsigned char>(value);
+      case Ply_type::int16: return text<std::int16_t, std::int16_t>(value);
+      case Ply_type::uint16: return text<std::uint16_t, std::uint16_t>(value);
+      case Ply_type::int32: return text<std::int32_t, std::int32_t>(value);
+      case Ply_type::uint32: return text<std::uint32_t, std::uint32_t>(value);
+      case Ply_type::float32: return text<float, float>(value);
+      case Ply_type::float64: return text<double, double>(value);
     }
+    return false;
   }
 
 private:
+  // `>> Read` (a libstdc++ stream), stored as a `Stored`.
+  template <class Read, class Stored> bool text(double& value)
+  {
+    Read read;
+    bool ok;
+    if constexpr(std::is_floating_point_v<Read>)
+      ok = extract_floating(at_, end_, read);
+    else
+      ok = extract_integer(at_, end_, read);
+    value = static_cast<Stored>(read);
+    return ok;
+  }
+
   bool read_binary(Ply_type type, double& value)
   {
-    unsigned char b[8];
-    const std::size_t n = ply_size(type);
-    if(!in_.read(reinterpret_cast<char*>(b), static_cast<std::streamsize>(n)))
-      return false;
-    if(swap_)
-      std::reverse(b, b + n);
     switch(type) {
-      case Ply_type::int8: value = as<std::int8_t>(b); break;
-      case Ply_type::uint8: value = b[0]; break;
-      case Ply_type::int16: value = as<std::int16_t>(b); break;
-      case Ply_type::uint16: value = as<std::uint16_t>(b); break;
-      case Ply_type::int32: value = as<std::int32_t>(b); break;
-      case Ply_type::uint32: value = as<std::uint32_t>(b); break;
-      case Ply_type::float32: value = as<float>(b); break;
-      case Ply_type::float64: value = as<double>(b); break;
+      case Ply_type::int8: return binary<std::int8_t>(value);
+      case Ply_type::uint8: return binary<std::uint8_t>(value);
+      case Ply_type::int16: return binary<std::int16_t>(value);
+      case Ply_type::uint16: return binary<std::uint16_t>(value);
+      case Ply_type::int32: return binary<std::int32_t>(value);
+      case Ply_type::uint32: return binary<std::uint32_t>(value);
+      case Ply_type::float32: return binary<float>(value);
+      case Ply_type::float64: return binary<double>(value);
     }
+    return false;
+  }
+
+  template <class T> bool binary(double& value)
+  {
+    if(static_cast<std::size_t>(end_ - at_) < sizeof(T)) {
+      at_ = end_; // a stream reads what is left, and fails
+      return false;
+    }
+    unsigned char b[sizeof(T)];
+    std::memcpy(b, at_, sizeof(T));
+    at_ += sizeof(T);
+    if(swap_)
+      std::reverse(b, b + sizeof(T));
+    T t;
+    std::memcpy(&t, b, sizeof(T));
+    value = static_cast<double>(t);
     return true;
   }
 
-  template <class T> static double as(const unsigned char* b)
-  {
-    T t;
-    std::memcpy(&t, b, sizeof(T));
-    return static_cast<double>(t);
-  }
-
-  std::istream& in_;
+  const char* at_;
+  const char* end_;
   int format_; // 0 text, 1 little-endian, 2 big-endian
   std::size_t line_;
   bool swap_;
 };
 
-/// Checks a PLY file for what CGAL's PLY reader (CGAL 5.5) does not survive,
-/// before it reads the file: a property line before any element line (CGAL
-/// takes the last element of an empty list); an element count larger than
-/// the file (an element without properties is "read" that many times); a
-/// vertex coordinate or colour, or a halfedge index, of another type than
-/// the one CGAL reads it as (a failed assertion, then a null pointer); a list
-/// longer than the file, or whose length cannot be read (CGAL allocates the
-/// list before reading it, with an uninitialised length if the read failed).
-/// The header is read as CGAL reads it (`Ply_header_rules::cgal`); the data
-/// only if a list length is 32-bit (an 8- or 16-bit length cannot ask for
-/// much), with CGAL's reads.
-inline Text_mesh_scan scan_ply(const std::string& path, std::uintmax_t file_size)
+/// The property CGAL's PLY reader takes the vertex indices of a face from:
+/// the first property named "vertex_indices" if it is a list of int or of
+/// uint, else the first named "vertex_index" if it is; -1 if none is.
+inline int ply_face_indices(const Ply_element& face)
+{
+  for(const char* name : {"vertex_indices", "vertex_index"})
+    for(std::size_t k = 0; k < face.properties.size(); ++k) {
+      const Ply_property& p = face.properties[k];
+      if(p.name != name)
+        continue;
+      if(p.list && (p.type == Ply_type::int32 || p.type == Ply_type::uint32))
+        return static_cast<int>(k);
+      break; // only the first property of a name counts
+    }
+  return -1;
+}
+
+/// How many items of `e` the `bytes` after the header can hold at most, for
+/// reserving arrays: each value takes a byte and a separator in text, its
+/// size in binary (a list at least its length).
+inline std::uintmax_t ply_items_that_fit(const Ply_element& e, std::size_t bytes, int format)
+{
+  std::size_t least = 0;
+  for(const Ply_property& p : e.properties)
+    least += format == 0 ? 2 : ply_size(p.list ? p.count_type : p.type);
+  return least == 0 ? e.count : std::min<std::uintmax_t>(e.count, bytes / least + 1);
+}
+
+/// Reads the PLY file `bytes` (of `file_size` bytes, for messages) in one
+/// pass, as CGAL's `read_PLY()` (CGAL 5.5) reads it: the header with
+/// `Ply_header_rules::cgal`; then every element in turn, each value as
+/// `Ply_value_reader::read_like_cgal()` reads it; a point from the first
+/// properties named x, y and z of each "vertex" or "vertices" item (0 for
+/// one that is missing), a polygon from the list of `ply_face_indices()` of
+/// each "face" or "faces" item (a negative int index becomes a huge one);
+/// other properties and elements read and dropped. Fills `soup` with what
+/// CGAL would give; `soup.complete` is whether CGAL would accept the file.
+///
+/// The scan gives what CGAL's reader does not survive, before the file is
+/// read further (CGAL 5.5 would crash or allocate without bound): a property
+/// line before any element line (CGAL takes the last element of an empty
+/// list); an element count larger than the file (an element without
+/// properties is "read" that many times); a vertex coordinate or colour, or
+/// a halfedge index, of another type than the one CGAL reads it as (a failed
+/// assertion, then a null pointer); a list longer than the file, or whose
+/// length cannot be read (CGAL allocates the list before reading it, with an
+/// uninitialised length if the read failed). The lists are checked when one
+/// list length is 32-bit (an 8- or 16-bit length cannot ask for much); with
+/// none, a negative 8- or 16-bit length gets the message of the exception
+/// that CGAL's reader throws (vector::_M_default_append). Elements have no
+/// lines in the scan.
+inline Text_mesh_scan scan_ply(std::string_view bytes, std::uintmax_t file_size, Polygon_soup& soup)
 {
   Text_mesh_scan scan;
+  soup = Polygon_soup();
   auto fail = [&](std::size_t line, const std::string& what) {
     scan.error_line = line;
     scan.error = "not a valid PLY file (" + what + ")";
     return scan;
   };
-  std::ifstream in(path, std::ios::binary);
   Ply_header header;
-  std::size_t error_line = 0;
-  const std::string problem = read_ply_header(in, file_size, Ply_header_rules::cgal, header, error_line);
+  std::size_t error_line = 0, data_start = 0;
+  const std::string problem =
+      read_ply_header(bytes, file_size, Ply_header_rules::cgal, header, error_line, data_start);
   if(!problem.empty())
     return fail(error_line, problem);
   const std::vector<Ply_element>& elements = header.elements;
@@ -326,52 +422,115 @@ inline Text_mesh_scan scan_ply(const std::string& path, std::uintmax_t file_size
           return scan;
   }
 
-  // List lengths, read as CGAL reads them.
+  // Lists are checked as they are read when one has a 32-bit length.
   auto long_list = [](const Ply_property& p) { return p.list && ply_size(p.count_type) == 4; };
   bool long_lists = false;
   for(const Ply_element& e : elements)
     for(const Ply_property& p : e.properties)
       long_lists = long_lists || long_list(p);
-  if(!long_lists)
-    return scan;
-  Ply_value_reader reader(in, header.format, header.lines + 1);
+
+  // Room for every point and polygon the file can hold, so that the arrays
+  // never grow (growing copies them into fresh memory).
+  const std::string_view data = bytes.substr(data_start);
+  std::uintmax_t points = 0, polygons = 0;
+  for(const Ply_element& e : elements) {
+    if(e.name == "vertex" || e.name == "vertices")
+      points += ply_items_that_fit(e, data.size(), header.format);
+    if(e.name == "face" || e.name == "faces")
+      polygons += ply_items_that_fit(e, data.size(), header.format);
+  }
+  soup.points.reserve(static_cast<std::size_t>(points));
+  soup.polygons.reserve(static_cast<std::size_t>(polygons));
+
+  // CGAL's reader stops at a value it cannot read (its result is then
+  // false), and at a face element without vertex indices; the lists are
+  // still checked to the end of the file, or to the first value that cannot
+  // be read, as the scanner that ran before CGAL's reader checked them.
+  bool cgal_reads = true;
+  Ply_value_reader reader(data, header.format, header.lines + 1);
+  std::vector<std::size_t> polygon;
   for(std::size_t k = 0; k < elements.size(); ++k) {
     const Ply_element& e = elements[k];
-    // CGAL stops at a value it cannot read, except in a face element: it
-    // ignores what reading the faces returned and reads the next elements
-    // from the failed stream, where a list length is never written before it
-    // is allocated (found by fuzzing: 7 GB).
+    const bool vertex = e.name == "vertex" || e.name == "vertices";
+    const bool face = e.name == "face" || e.name == "faces";
+    // The property each coordinate comes from (-1: none, the coordinate is 0).
+    int xyz[3] = {-1, -1, -1};
+    static const char* const coordinates[3] = {"x", "y", "z"};
+    for(int c = 0; vertex && c < 3; ++c)
+      for(std::size_t i = 0; i < e.properties.size() && xyz[c] < 0; ++i)
+        if(e.properties[i].name == coordinates[c])
+          xyz[c] = static_cast<int>(i);
+    const int indices = face ? ply_face_indices(e) : -1;
+    if(face && indices < 0) {
+      cgal_reads = false; // "can't find vertex indices"
+      if(!long_lists)
+        break;
+    }
+    // CGAL ignores what reading the faces returned and reads the next
+    // elements from the failed stream, where a list length is never written
+    // before it is allocated (found by fuzzing: 7 GB).
     const bool faces_then_lists =
-        (e.name == "face" || e.name == "faces") &&
-        std::any_of(elements.begin() + static_cast<std::ptrdiff_t>(k) + 1, elements.end(), [&](const Ply_element& later) {
-          return std::any_of(later.properties.begin(), later.properties.end(), long_list);
-        });
-    auto cut_short_before_lists = [&](std::size_t j, const Ply_property& p) {
+        face && std::any_of(elements.begin() + static_cast<std::ptrdiff_t>(k) + 1, elements.end(),
+                            [&](const Ply_element& later) {
+                              return std::any_of(later.properties.begin(), later.properties.end(), long_list);
+                            });
+    auto cut_short_before_lists = [&](std::uintmax_t j, const Ply_property& p) {
       return fail(0, "item " + std::to_string(j) + " of element \"" + e.name + "\" ends before its property \"" + p.name +
                          "\" can be read, and a later element has lists");
     };
-    for(std::size_t j = 0; j < e.count; ++j)
-      for(const Ply_property& p : e.properties) {
+    // A value that cannot be read: CGAL's result is false.
+    auto stopped = [&](std::uintmax_t j, const Ply_property& p) {
+      return long_lists && faces_then_lists ? cut_short_before_lists(j, p) : scan;
+    };
+    for(std::uintmax_t j = 0; j < e.count; ++j) {
+      std::array<double, 3> point{0., 0., 0.};
+      for(std::size_t i = 0; i < e.properties.size(); ++i) {
+        const Ply_property& p = e.properties[i];
         double value;
-        const bool ok = reader.read_like_cgal(p.list ? p.count_type : p.type, value);
-        if(!ok && faces_then_lists) return cut_short_before_lists(j, p);
-        if(!ok && !p.list)
-          return scan; // CGAL stops here too, and reports the file as not valid
-        if(!ok) // CGAL would allocate a list of the unread (uninitialised) length first
-          return fail(0, "the length of list \"" + p.name + "\" of item " + std::to_string(j) + " of element \"" +
-                             e.name + "\" cannot be read");
-        if(!p.list)
+        if(!reader.read_like_cgal(p.list ? p.count_type : p.type, value)) {
+          // CGAL would allocate a list of the unread (uninitialised) length first.
+          if(p.list && long_lists && !faces_then_lists)
+            return fail(0, "the length of list \"" + p.name + "\" of item " + std::to_string(j) + " of element \"" +
+                               e.name + "\" cannot be read");
+          return stopped(j, p);
+        }
+        if(!p.list) {
+          for(int c = 0; c < 3; ++c)
+            if(xyz[c] == static_cast<int>(i))
+              point[static_cast<std::size_t>(c)] = value;
           continue;
-        // At least one byte per value in binary, two (a digit and a space) in text.
-        if(value < 0 || value * static_cast<double>(header.format == 0 ? 2 : ply_size(p.type)) >
-                            static_cast<double>(file_size + 1))
-          return fail(0, "item " + std::to_string(j) + " of element \"" + e.name + "\" has a list \"" + p.name +
-                             "\" of " + std::to_string(static_cast<long long>(value)) + " values, " +
-                             (value < 0 ? "a negative length" : "more than the file can hold"));
-        for(std::size_t i = 0, n = static_cast<std::size_t>(value); i < n; ++i)
-          if(!reader.read_like_cgal(p.type, value)) return faces_then_lists ? cut_short_before_lists(j, p) : scan;
+        }
+        if(long_lists) {
+          // At least one byte per value in binary, two (a digit and a space) in text.
+          if(value < 0 || value * static_cast<double>(header.format == 0 ? 2 : ply_size(p.type)) >
+                              static_cast<double>(file_size + 1))
+            return fail(0, "item " + std::to_string(j) + " of element \"" + e.name + "\" has a list \"" + p.name +
+                               "\" of " + std::to_string(static_cast<long long>(value)) + " values, " +
+                               (value < 0 ? "a negative length" : "more than the file can hold"));
+        } else if(value < 0) {
+          // CGAL makes the length a std::size_t and resizes a vector to it.
+          scan.error = "not a valid PLY file (vector::_M_default_append)";
+          return scan;
+        }
+        const std::size_t n = static_cast<std::size_t>(value);
+        const bool kept = cgal_reads && static_cast<int>(i) == indices;
+        if(kept)
+          polygon.clear();
+        for(std::size_t v = 0; v < n; ++v) {
+          if(!reader.read_like_cgal(p.type, value))
+            return stopped(j, p);
+          if(kept) // an int index as CGAL converts it: sign-extended
+            polygon.push_back(static_cast<std::size_t>(static_cast<long long>(value)));
+        }
       }
+      if(vertex && cgal_reads)
+        soup.points.push_back(point);
+      if(face && cgal_reads)
+        soup.polygons.push_back(polygon);
+    }
   }
+  // Without end_header, CGAL's stream failed at the end of the header.
+  soup.complete = cgal_reads && header.ended;
   return scan;
 }
 

@@ -1,6 +1,6 @@
 // diffuv: what a mesh file paints on its vertices and faces (colours, label
 // properties), read through the PLY and OFF scanners that the mesh reader
-// uses, with the line of every item for messages.
+// uses, with the line of every item for messages. Both read the mapped file.
 #ifndef DIFFUV_IO_INTERNAL_READ_PAINT_H
 #define DIFFUV_IO_INTERNAL_READ_PAINT_H
 
@@ -18,8 +18,6 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -98,16 +96,19 @@ inline Paint_file read_ply_paint(const std::string& path, const std::string& pro
   auto fail = [&](std::size_t line, const std::string& what) {
     return Input_error(path, line, "not a valid PLY file (" + what + ")");
   };
-  std::ifstream in(path, std::ios::binary);
+  File_bytes bytes;
+  if(!bytes.open(path))
+    throw Input_error(path, 0, "cannot open file");
   Ply_header header;
-  std::size_t error_line = 0;
-  const std::string problem = read_ply_header(in, file_size, Ply_header_rules::strict, header, error_line);
+  std::size_t error_line = 0, data_start = 0;
+  const std::string problem =
+      read_ply_header(bytes.view(), file_size, Ply_header_rules::strict, header, error_line, data_start);
   if(!problem.empty())
     throw fail(error_line, problem);
   const int format = header.format;
 
   Paint_file file;
-  Ply_value_reader reader(in, format, header.lines + 1);
+  Ply_value_reader reader(bytes.view().substr(data_start), format, header.lines + 1);
   bool seen_vertex = false, seen_face = false;
   for(const Ply_element& element : header.elements) {
     if(element.properties.empty())
@@ -172,7 +173,7 @@ inline Paint_file read_ply_paint(const std::string& path, const std::string& pro
       for(std::size_t k = 0; k < element.properties.size(); ++k) {
         const Ply_property& p = element.properties[k];
         auto bad = [&](const std::string& what) {
-          return fail(item_line, (what.empty() ? in.eof() ? "the file ends in" : "cannot read" : what) +
+          return fail(item_line, (what.empty() ? reader.at_end() ? "the file ends in" : "cannot read" : what) +
                                      " property \"" + p.name + "\" of " + element.name + " " + std::to_string(j));
         };
         double value = 0;
