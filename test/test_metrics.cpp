@@ -395,6 +395,71 @@ TEST(Metrics, ValidPlanarGridsHaveNoOverlaps)
   EXPECT_GT(s.angle_max, 1.01);
 }
 
+// measure_distortion() skips the pairwise overlap test where the chart is
+// one-to-one by its border: no flipped or degenerate face and the border one
+// loop mapped onto a simple polygon. A strip wound one and a half times
+// around a circle keeps every triangle's orientation, yet overlaps itself:
+// its border crosses itself, so the pairs are counted.
+TEST(Metrics, ABorderThatCrossesItselfStillHasItsOverlapsCounted)
+{
+  Mesh m;
+  const int n = 60;  // cells along the strip
+  std::vector<Vertex> inner, outer;
+  for(int i = 0; i <= n; ++i) {
+    inner.push_back(m.add_vertex(Point_3(0.1 * i, 0, 0)));
+    outer.push_back(m.add_vertex(Point_3(0.1 * i, 1, 0)));
+  }
+  for(int i = 0; i < n; ++i) {
+    m.add_face(inner[i], inner[i + 1], outer[i + 1]);
+    m.add_face(inner[i], outer[i + 1], outer[i]);
+  }
+  Uv_map uv = add_uv(m);
+  auto wind = [&](double turns) {
+    for(int i = 0; i <= n; ++i) {
+      const double angle = 2 * M_PI * turns * i / n;
+      // The strip's first row on the outer circle: counter-clockwise triangles.
+      put(uv, inner[i], Point_2(1.5 * std::cos(angle), 1.5 * std::sin(angle)));
+      put(uv, outer[i], Point_2(std::cos(angle), std::sin(angle)));
+    }
+  };
+  wind(1.5);
+  auto s = diffuv::measure_distortion(m, m.points(), all_faces(m), uv);
+  EXPECT_EQ(s.flipped, 0u);
+  EXPECT_EQ(s.degenerate, 0u);
+  EXPECT_FALSE(diffuv::internal::border_maps_to_simple_polygon(m, all_faces(m), uv));
+  EXPECT_GT(s.overlapping_pairs, 0u);
+  EXPECT_EQ(s.overlapping_pairs, diffuv::count_overlapping_pairs(m, all_faces(m), uv));
+  EXPECT_FALSE(s.injective());
+
+  // Half a turn: one-to-one, shown by the border alone.
+  wind(0.5);
+  EXPECT_TRUE(diffuv::internal::border_maps_to_simple_polygon(m, all_faces(m), uv));
+  s = diffuv::measure_distortion(m, m.points(), all_faces(m), uv);
+  EXPECT_TRUE(s.injective());
+  EXPECT_EQ(diffuv::count_overlapping_pairs(m, all_faces(m), uv), 0u);
+}
+
+// A chart with a hole has two border loops: the border cannot show it one-to-one.
+TEST(Metrics, AChartWithAHoleIsCheckedPairByPair)
+{
+  Mesh m;
+  const std::vector<Point_2> xy = fill_square_grid(m, 4, 4, 0.25);
+  Uv_map uv = add_uv(m);
+  set_affine_uv(m, uv, xy, 1, 0, 0, 1);
+  std::vector<Face> ring;
+  for(Face f : m.faces()) {
+    const auto h = m.halfedge(f);
+    const Point_2 c = CGAL::centroid(xy[m.source(h).idx()], xy[m.target(h).idx()], xy[m.target(m.next(h)).idx()]);
+    if(!(c.x() > 0.25 && c.x() < 0.75 && c.y() > 0.25 && c.y() < 0.75)) ring.push_back(f);
+  }
+  ASSERT_EQ(ring.size(), 32u - 8u);
+  EXPECT_TRUE(diffuv::internal::border_maps_to_simple_polygon(m, all_faces(m), uv));
+  EXPECT_FALSE(diffuv::internal::border_maps_to_simple_polygon(m, ring, uv));
+  const auto s = diffuv::measure_distortion(m, m.points(), ring, uv);
+  EXPECT_EQ(s.overlapping_pairs, 0u);
+  EXPECT_TRUE(s.injective());
+}
+
 TEST(Metrics, DegenerateTriangleIsReportedAndSkipped)
 {
   // Vertex (2,0) of the 2 x 1 grid moved onto the segment (1,0)-(2,1): face 2 collapses.

@@ -6,6 +6,7 @@
 #include <diffuv/graph/patch_graph.h>
 #include <diffuv/layout/disc_patches.h>
 #include <diffuv/layout/voronoi_discs.h>
+#include <diffuv/metrics/distortion.h>
 #include <diffuv/parameterization/parameterize_disc.h>
 #include <diffuv/parameterization/parameterize_patches.h>
 #include <diffuv/patches/flat_triangles.h>
@@ -202,6 +203,37 @@ TEST(PatchMesh, DefaultPipelineGivesTheMapOfTheFilteredGraph)
     }
   }
   EXPECT_GT(moved, 0u);  // the repair ran somewhere, so its walks were compared too
+}
+
+// measure_distortion() counts overlapping pairs only where the chart's border
+// cannot show it one-to-one: on the charts of real atlases, with the repair
+// (every chart one-to-one) and without it (folds), the count is the pairwise
+// test's, count_overlapping_pairs().
+TEST(ParameterizePatches, OverlapsMeasuredAsThePairwiseTestCountsThem)
+{
+  for(const char* name : {"cow.off", "bull.off"}) {
+    const Mesh& m = cgal_mesh(name);
+    const Mapped_patches mp = automatic_patches(m);
+    for(bool repair : {true, false}) {
+      diffuv::Uv_atlas<Mesh> atlas(m);
+      diffuv::Patch_parameterization_options options;
+      options.repair.enabled = repair;
+      const auto results = diffuv::parameterize_patches(m, m.points(), mp.seg, atlas, options);
+      std::size_t shown_by_border = 0, overlapping = 0;
+      for(std::size_t p = 0; p < results.size(); ++p) {
+        ASSERT_TRUE(results[p].status.ok()) << name << " patch " << p;
+        const auto& chart = atlas.chart(results[p].chart);
+        const auto uv = atlas.chart_texture_map(results[p].chart);
+        const auto s = diffuv::measure_distortion(m, m.points(), chart.faces, uv);
+        const std::size_t pairs = diffuv::count_overlapping_pairs(m, chart.faces, uv);
+        EXPECT_EQ(s.overlapping_pairs, pairs) << name << " patch " << p << (repair ? "" : " (no repair)");
+        overlapping += pairs > 0;
+        shown_by_border += s.flipped == 0 && s.degenerate == 0 && diffuv::internal::border_maps_to_simple_polygon(m, chart.faces, uv);
+      }
+      EXPECT_GT(shown_by_border, results.size() / 2) << name;
+      if(!repair) EXPECT_GT(overlapping, 0u) << name << ": without the repair some charts fold";
+    }
+  }
 }
 
 // Patches mapped on 1, 2 or all threads: the same atlas, bit for bit, and the

@@ -16,6 +16,7 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Bbox_2.h>
+#include <CGAL/Polygon_2_algorithms.h>
 #include <CGAL/box_intersection_d.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/number_utils.h>
@@ -143,6 +144,58 @@ inline std::size_t count_overlaps(std::vector<Uv_triangle> triangles, const std:
     if(interiors_overlap(triangles[a.info()], triangles[b.info()])) ++count;
   });
   return count;
+}
+
+template <class T, class = void>
+struct is_less_comparable : std::false_type {};
+template <class T>
+struct is_less_comparable<T, std::void_t<decltype(std::declval<const T&>() < std::declval<const T&>())>> : std::true_type {};
+
+/// Whether the border of the chart `faces` is a single loop whose (u,v) image
+/// is a simple polygon. False where that cannot be told (face descriptors that
+/// cannot be sorted, a face listed twice, no border, several loops, a loop
+/// through a vertex twice).
+template <class TriangleMesh, class FaceRange, class UvMap>
+bool border_maps_to_simple_polygon(const TriangleMesh& tm, const FaceRange& faces, UvMap uv)
+{
+  using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
+  using halfedge_descriptor = typename boost::graph_traits<TriangleMesh>::halfedge_descriptor;
+  if constexpr(!is_less_comparable<face_descriptor>::value) {
+    return false;
+  } else {
+    std::vector<face_descriptor> sorted(std::begin(faces), std::end(faces));
+    std::sort(sorted.begin(), sorted.end());
+    if(std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) return false;
+    auto in_chart = [&](face_descriptor f) {
+      return f != boost::graph_traits<TriangleMesh>::null_face() && std::binary_search(sorted.begin(), sorted.end(), f);
+    };
+    // Border halfedges: in a face of the chart, their opposite not.
+    std::size_t border_edges = 0;
+    halfedge_descriptor start = boost::graph_traits<TriangleMesh>::null_halfedge();
+    for(face_descriptor f : sorted)
+      for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, tm), tm))
+        if(!in_chart(face(opposite(h, tm), tm))) {
+          if(border_edges++ == 0) start = h;
+        }
+    if(border_edges < 3) return false;
+    std::vector<Uv_point> polygon;
+    polygon.reserve(border_edges);
+    const std::size_t most_turns = 3 * sorted.size();
+    halfedge_descriptor h = start;
+    do {
+      polygon.push_back(uv_point(uv, source(h, tm)));
+      if(polygon.size() > border_edges) return false;
+      // The next border halfedge leaves target(h): turn around it through the chart's faces.
+      halfedge_descriptor g = next(h, tm);
+      for(std::size_t turns = 0; in_chart(face(opposite(g, tm), tm)); ++turns) {
+        if(turns > most_turns) return false;
+        g = next(opposite(g, tm), tm);
+      }
+      h = g;
+    } while(h != start);
+    if(polygon.size() != border_edges) return false;  // several loops
+    return CGAL::is_simple_2(polygon.begin(), polygon.end(), CGAL::Exact_predicates_inexact_constructions_kernel());
+  }
 }
 
 template <class TriangleMesh, class FaceRange, class UvMap>
@@ -327,6 +380,13 @@ Distortion_summary measure_distortion(const TriangleMesh& tm, VertexPointMap vpm
     s.stretch_l2 = std::sqrt(l2_sum / weight);
   }
 
+  // Overlaps. A chart with no flipped or degenerate face whose border is one
+  // loop mapped onto a simple polygon is one-to-one: with every triangle
+  // keeping its orientation, the number of faces over a point is the winding
+  // number of the border's image around it, one inside and zero outside. So
+  // the pairwise test runs only where that cannot be shown (folds, or a border
+  // that crosses itself); both give the same count (tested).
+  if(s.flipped == 0 && s.degenerate == 0 && internal::border_maps_to_simple_polygon(tm, faces, uv)) return s;
   std::vector<internal::Uv_triangle> triangles;
   triangles.reserve(data.size());
   for(const Face_data& fd : data) triangles.push_back(fd.uv);
