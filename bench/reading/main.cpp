@@ -4,7 +4,7 @@
 // steps (about 148k vertices, a disc) and a square grid of 1050 x 1050
 // vertices (1.1M). Each is written as ASCII OFF, OBJ and PLY (17 significant
 // digits, as CGAL's writers and diffuv's own write them) and as binary
-// little-endian PLY (double coordinates), into a scratch folder; then each
+// little- and big-endian PLY (double coordinates), into a scratch folder; then each
 // file is read with diffuv::read_triangle_mesh() (file to checked
 // Surface_mesh, what `diffuv param` calls "read") and, as a reference, with
 // CGAL::IO::read_polygon_soup() alone (file to points and polygons, no
@@ -26,6 +26,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -66,6 +68,41 @@ Mesh make_mesh(const std::string& name)
 
 struct File { std::string format, path; bool binary = false; };
 
+// A big-endian copy of the little-endian PLY file `little` that CGAL's writer
+// wrote (it writes no other binary): the same header but for the format
+// line, then every value of "double x, y, z" and "list uchar int" with its
+// bytes reversed.
+void write_big_endian_copy(const std::string& little, const std::string& big)
+{
+  std::ifstream in(little, std::ios::binary);
+  std::ofstream out(big, std::ios::binary);
+  std::size_t vertices = 0, faces = 0;
+  for(std::string line; std::getline(in, line);) {
+    std::istringstream words(line);
+    std::string keyword, name;
+    std::size_t count = 0;
+    if(words >> keyword && keyword == "element" && words >> name >> count)
+      (name == "vertex" ? vertices : faces) = count;
+    out << (keyword == "format" ? "format binary_big_endian 1.0" : line) << '\n';
+    if(keyword == "end_header")
+      break;
+  }
+  auto copy_reversed = [&](std::size_t size) {
+    char b[8];
+    in.read(b, static_cast<std::streamsize>(size));
+    std::reverse(b, b + size);
+    out.write(b, static_cast<std::streamsize>(size));
+  };
+  for(std::size_t i = 0; i < 3 * vertices; ++i)
+    copy_reversed(sizeof(double));
+  for(std::size_t j = 0; j < faces; ++j) {
+    const int n = in.peek();
+    copy_reversed(1);
+    for(int c = 0; c < n; ++c)
+      copy_reversed(sizeof(std::int32_t));
+  }
+}
+
 std::vector<File> write_files(const Mesh& m, const std::string& name, const fs::path& folder)
 {
   std::vector<File> files;
@@ -79,6 +116,8 @@ std::vector<File> write_files(const Mesh& m, const std::string& name, const fs::
   CGAL::IO::write_PLY(files.back().path, m, precision.use_binary_mode(false));
   files.push_back({"PLY binary", path(".binary.ply"), true});
   CGAL::IO::write_PLY(files.back().path, m, CGAL::parameters::use_binary_mode(true));
+  files.push_back({"PLY binary BE", path(".big_endian.ply"), true});
+  write_big_endian_copy(files[files.size() - 2].path, files.back().path);
   return files;
 }
 
