@@ -268,7 +268,7 @@ private:
   // `>> Read` (a libstdc++ stream), stored as a `Stored`.
   template <class Read, class Stored> bool text(double& value)
   {
-    Read read;
+    Read read{}; // the value of a failed read is not used, but is not left uninitialised
     bool ok;
     if constexpr(std::is_floating_point_v<Read>)
       ok = extract_floating(at_, end_, read);
