@@ -893,13 +893,16 @@ void put_ply_value(std::string& out, int format, Ply_type type, double value)
       std::reverse(b, b + sizeof t);
     out.append(reinterpret_cast<const char*>(b), sizeof t);
   };
+  // Integers wrap to their type (200 as a char is -56), through a 64-bit
+  // integer: a double out of the target's range would be undefined behaviour.
+  auto whole = [&] { return static_cast<std::int64_t>(value); };
   switch(type) {
-    case Ply_type::int8: put(static_cast<std::int8_t>(value)); break;
-    case Ply_type::uint8: put(static_cast<std::uint8_t>(value)); break;
-    case Ply_type::int16: put(static_cast<std::int16_t>(value)); break;
-    case Ply_type::uint16: put(static_cast<std::uint16_t>(value)); break;
-    case Ply_type::int32: put(static_cast<std::int32_t>(value)); break;
-    case Ply_type::uint32: put(static_cast<std::uint32_t>(value)); break;
+    case Ply_type::int8: put(static_cast<std::int8_t>(whole())); break;
+    case Ply_type::uint8: put(static_cast<std::uint8_t>(whole())); break;
+    case Ply_type::int16: put(static_cast<std::int16_t>(whole())); break;
+    case Ply_type::uint16: put(static_cast<std::uint16_t>(whole())); break;
+    case Ply_type::int32: put(static_cast<std::int32_t>(whole())); break;
+    case Ply_type::uint32: put(static_cast<std::uint32_t>(whole())); break;
     case Ply_type::float32: put(static_cast<float>(value)); break;
     case Ply_type::float64: put(value); break;
   }
