@@ -8,6 +8,7 @@
 #include "test_data.h"
 
 #include <diffuv/core/color.h>
+#include <diffuv/io/paint_look.h>
 #include <diffuv/io/painted_labels.h>
 #include <diffuv/io/read_mesh.h>
 
@@ -418,6 +419,43 @@ TEST(LabelsVertexRule, MajorityThenSmallest)
             "polygon 1 has vertex index -1, but there are 6 vertex labels");
   EXPECT_EQ(diffuv_test::error_text<diffuv::Error>([&] { diffuv::vertex_labels_to_polygons(vertex_labels, Polygons{{}}); }),
             "polygon 0 has no vertex");
+}
+
+// Painting: few colours, each one area. A scan: a colour per face, or a few
+// colours scattered at random.
+TEST(PaintLook, PaintingAndScansAreToldApart)
+{
+  const Mesh& cow = diffuv_test::cgal_mesh("cow.off");
+  double low = 1e300, high = -1e300;
+  for(auto v : vertices(cow)) {
+    low = std::min(low, cow.point(v).y());
+    high = std::max(high, cow.point(v).y());
+  }
+  std::vector<int> bands(num_faces(cow));
+  for(auto f : faces(cow)) {
+    const double y = cow.point(target(halfedge(f, cow), cow)).y();
+    bands[f.idx()] = std::min(3, static_cast<int>(4 * (y - low) / (high - low)));
+  }
+  const diffuv::Paint_look painted = diffuv::look_of_paint(cow, bands, 4);
+  EXPECT_TRUE(painted.painted);
+  EXPECT_EQ(painted.colors, 4u);
+  EXPECT_GE(painted.areas, 4u); // legs and horns make a band several areas
+  EXPECT_LE(painted.areas, 2u * 4u + 16u);
+
+  std::vector<int> own(num_faces(cow));
+  for(std::size_t f = 0; f < own.size(); ++f) own[f] = static_cast<int>(f);
+  const diffuv::Paint_look every_face = diffuv::look_of_paint(cow, own, own.size());
+  EXPECT_FALSE(every_face.painted);
+  EXPECT_EQ(every_face.areas, num_faces(cow));
+
+  std::vector<int> scattered(num_faces(cow));
+  for(std::size_t f = 0; f < scattered.size(); ++f) scattered[f] = static_cast<int>(f * 7919 % 13);
+  const diffuv::Paint_look speckled = diffuv::look_of_paint(cow, scattered, 13);
+  EXPECT_FALSE(speckled.painted);
+  EXPECT_GT(speckled.areas, 2u * 13u + 16u);
+
+  // One colour: one area, painted.
+  EXPECT_TRUE(diffuv::look_of_paint(cow, std::vector<int>(num_faces(cow), 0), 1).painted);
 }
 
 } // namespace

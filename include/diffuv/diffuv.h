@@ -24,6 +24,7 @@
 #include <diffuv/core/four_sides.h>
 
 #include <diffuv/io/atomic_file.h>
+#include <diffuv/io/paint_look.h>
 #include <diffuv/io/painted_labels.h>
 #include <diffuv/io/read_labels.h>
 #include <diffuv/io/read_mesh.h>

@@ -181,6 +181,7 @@ std::vector<int> vertex_labels_to_polygons(const std::vector<int>& vertex_labels
 ///
 /// \param property if not empty, only the face, then vertex, property of that
 ///        name (any case) is used, whatever its type; colours are ignored
+/// \param colors false: colours are ignored (sources 2 and 3 only)
 /// \returns source `none` for a file with no painting, for OBJ and STL files,
 ///          and for binary and n-dimensional OFF files (not read)
 /// \throws Input_error naming `path` and the line when known: "unknown mesh
@@ -192,7 +193,8 @@ std::vector<int> vertex_labels_to_polygons(const std::vector<int>& vertex_labels
 ///   integers", "face 3 has value 0.5 in property \"quality\", not an integer
 ///   label", "face 3 has vertex index 9, out of range (the file has 8
 ///   vertices)" (vertex sources), "the file has no face or vertex property \"p\""
-inline Painted_labels read_painted_labels(const std::string& path, const std::string& property = std::string())
+inline Painted_labels read_painted_labels(const std::string& path, const std::string& property = std::string(),
+                                          bool colors = true)
 {
   const Mesh_format format = mesh_format(path);
   std::error_code ec;
@@ -234,7 +236,7 @@ inline Painted_labels read_painted_labels(const std::string& path, const std::st
                  to_polygons(internal::labels_of(path, vertices, vertices.candidates[0])));
     throw Input_error(path, 0, "the file has no face or vertex property \"" + property + "\"");
   }
-  if(!faces.color_name.empty()) {
+  if(colors && !faces.color_name.empty()) {
     const std::vector<int> ranks = internal::color_ranks(internal::colors_of(path, faces), result.colors);
     for(const auto& candidate : faces.candidates)
       if(internal::same_partition(candidate, ranks)) {
@@ -250,7 +252,7 @@ inline Painted_labels read_painted_labels(const std::string& path, const std::st
     if(internal::usable(candidate))
       return use(Label_source::vertex_property, candidate.name,
                  to_polygons(internal::labels_of(path, vertices, candidate)));
-  if(!vertices.color_name.empty())
+  if(colors && !vertices.color_name.empty())
     return use(Label_source::vertex_colors, vertices.color_name,
                to_polygons(internal::color_ranks(internal::colors_of(path, vertices), result.colors)));
   return result;

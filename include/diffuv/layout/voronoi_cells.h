@@ -28,6 +28,7 @@
 #include <cstddef>
 #include <limits>
 #include <numeric>
+#include <unordered_map>
 #include <vector>
 
 namespace diffuv {
@@ -55,14 +56,22 @@ public:
   {
     auto findex = get(boost::face_index, tm_);
     const std::size_t n = faces_.size();
-    position_.assign(num_faces(tm_), n);
-    for(std::size_t i = 0; i < n; ++i) position_[get(findex, faces_[i])] = i;
+    // A region much smaller than the mesh (one of thousands of painted
+    // regions) keeps its positions in a hash table: an array of the mesh's
+    // size per region made such meshes quadratic.
+    if(16 * n < static_cast<std::size_t>(num_faces(tm_))) {
+      sparse_position_.reserve(n);
+      for(std::size_t i = 0; i < n; ++i) sparse_position_.emplace(get(findex, faces_[i]), i);
+    } else {
+      position_.assign(num_faces(tm_), n);
+      for(std::size_t i = 0; i < n; ++i) position_[get(findex, faces_[i])] = i;
+    }
     for(std::size_t i = 0; i < n; ++i) centroids_.push_back(centroid(faces_[i]));
     for(std::size_t i = 0; i < n; ++i)
       for(auto h : CGAL::halfedges_around_face(halfedge(faces_[i], tm_), tm_)) {
         const auto g = face(opposite(h, tm_), tm_);
         if(g == boost::graph_traits<TriangleMesh>::null_face()) continue;
-        const std::size_t j = position_[get(findex, g)];
+        const std::size_t j = position_of(get(findex, g));
         if(j < n && i < j) {
           double w = std::sqrt(CGAL::to_double(CGAL::squared_distance(centroids_[i], centroids_[j])));
           if(bend_length > 0) {
@@ -82,7 +91,7 @@ public:
   /// #faces() entries: the position in `seeds()` of the nearest seed.
   const std::vector<std::size_t>& origin() const { return origin_; }
   /// The position of face `f` in `faces()`, or `faces().size()` if it is not in the region.
-  std::size_t position(face_descriptor f) const { return position_[get(get(boost::face_index, tm_), f)]; }
+  std::size_t position(face_descriptor f) const { return position_of(get(get(boost::face_index, tm_), f)); }
 
   /// Replaces the seeds (positions in `faces()`) and recomputes every distance.
   void set_seeds(std::vector<std::size_t> seeds)
@@ -249,7 +258,15 @@ private:
   const TriangleMesh& tm_;
   VertexPointMap vpm_;
   std::vector<face_descriptor> faces_;
-  std::vector<std::size_t> position_;  // by face index
+  std::vector<std::size_t> position_;  // by face index (empty for a small region)
+  std::unordered_map<std::size_t, std::size_t> sparse_position_;  // face index -> position, for a small region
+
+  std::size_t position_of(std::size_t face_index) const
+  {
+    if(!position_.empty()) return position_[face_index];
+    const auto found = sparse_position_.find(face_index);
+    return found == sparse_position_.end() ? faces_.size() : found->second;
+  }
   std::vector<Point> centroids_;
   Dual dual_;
   std::vector<std::size_t> seeds_;

@@ -30,6 +30,15 @@ namespace diffuv {
 /// sides) with the label of the neighbouring patch that shares the longest
 /// boundary with it, then rebuilds the patches; repeats until none is left.
 ///
+/// The merges go in passes over the patches, each pass followed by one
+/// rebuild. In a pass a small patch merges unless another merged into it,
+/// and never into a patch that merged away or a small patch that took one
+/// in (their borders are no longer the ones measured); a large patch may
+/// take in several. Each pass merges at least the first small patch that has
+/// a neighbour and costs one walk of all patches' borders: a mesh with
+/// thousands of small patches (a scan whose every colour is a region) takes
+/// a few passes, not one rebuild per merge.
+///
 /// \returns how many patches were merged
 template <class TriangleMesh, class VertexPointMap>
 std::size_t merge_small_patches(const TriangleMesh& tm, VertexPointMap vpm,
@@ -40,16 +49,30 @@ std::size_t merge_small_patches(const TriangleMesh& tm, VertexPointMap vpm,
   std::size_t merged = 0;
   for(bool changed = true; changed;) {
     changed = false;
-    for(std::size_t p = 0; p < seg.number_of_patches() && !changed; ++p) {
-      const auto loops = patch_loops(tm, vpm, seg, p);
+    const std::size_t np = seg.number_of_patches();
+    // The small patches and their borders, as the pass starts.
+    std::vector<char> small(np, 0);
+    std::vector<std::vector<Patch_loop<TriangleMesh>>> small_loops(np);
+    for(std::size_t p = 0; p < np; ++p) {
+      auto loops = patch_loops(tm, vpm, seg, p);
       std::size_t boundary_vertices = 0;
+      for(const auto& loop : loops) boundary_vertices += loop.vertices.size();
+      if(boundary_vertices >= min_boundary_vertices) continue;
+      small[p] = 1;
+      small_loops[p] = std::move(loops);
+    }
+    // A patch that merged away, or a small patch that took one in, is done
+    // for this pass: the borders measured are no longer its own. (A large
+    // patch may take in several.)
+    std::vector<char> done(np, 0);
+    for(std::size_t p = 0; p < np; ++p) {
+      if(!small[p] || done[p]) continue;
+      const auto& loops = small_loops[p];
       std::map<std::size_t, double> shared; // neighbour patch -> shared length
-      for(const auto& loop : loops) {
-        boundary_vertices += loop.vertices.size();
+      for(const auto& loop : loops)
         for(std::size_t i = 0; i < loop.vertices.size(); ++i)
           if(loop.neighbour[i] != Patch_loop<TriangleMesh>::mesh_border) shared[loop.neighbour[i]] += loop.length[i];
-      }
-      if(boundary_vertices >= min_boundary_vertices || shared.empty()) continue;
+      if(shared.empty()) continue;
       // The neighbour sharing the longest border (the lowest on a tie) whose
       // union with p has enough boundary edges; if none has, the one sharing the
       // longest border. Without the first rule the faces of a tiny closed
@@ -79,11 +102,14 @@ std::size_t merge_small_patches(const TriangleMesh& tm, VertexPointMap vpm,
           break;
         }
       }
+      if(done[best]) continue; // the next pass decides
       for(auto f : seg.patch_faces[p]) face_labels[get(findex, f)] = seg.patch_label[best];
-      seg = patches_from_labels(tm, vpm, face_labels);
+      done[p] = 1;
+      if(small[best]) done[best] = 1;
       ++merged;
       changed = true;
     }
+    if(changed) seg = patches_from_labels(tm, vpm, face_labels);
   }
   return merged;
 }
