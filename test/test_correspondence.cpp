@@ -282,7 +282,19 @@ TEST(Correspondence, NearestFaceLabelsOfAnExactCopy)
   const Mesh& a = cow();
   const std::vector<int> labels = segment_labels(a);
   const Moved_copy b = shuffled_moved_copy(a, 4, false);
-  EXPECT_EQ(diffuv::nearest_face_labels(a, labels, b.mesh), carry_labels(labels, b));
+  diffuv::Nearest_face_report report;
+  EXPECT_EQ(diffuv::nearest_face_labels(a, labels, b.mesh, &report), carry_labels(labels, b));
+  EXPECT_LT(report.median_distance, 1e-9 * report.source_diagonal);
+  EXPECT_TRUE(report.lies_on_source());
+  // Moved, turned and scaled: most faces far from the cow, which the report says.
+  const Moved_copy moved = shuffled_moved_copy(a, 4, true);
+  diffuv::nearest_face_labels(a, labels, moved.mesh, &report);
+  CGAL::Bbox_3 box;
+  for(auto v : vertices(a)) box += a.point(v).bbox();
+  EXPECT_DOUBLE_EQ(report.source_diagonal, std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
+                                                     CGAL::square(box.zmax() - box.zmin())));
+  EXPECT_GT(report.median_fraction(), 0.05);
+  EXPECT_FALSE(report.lies_on_source());
 }
 
 

@@ -15,19 +15,37 @@
 #include <boost/graph/graph_traits.hpp>
 #include <boost/property_map/property_map.hpp>
 
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
 #include <vector>
 
 namespace diffuv {
+
+/// How far the target lies from the source: labels carried by nearest face
+/// mean something only for a target on top of the source.
+struct Nearest_face_report {
+  double median_distance = 0.;  ///< median over the target's faces of the distance from its centroid to the source
+  double source_diagonal = 0.;  ///< the diagonal of the source's bounding box
+
+  /// The median distance as a fraction of the source's diagonal.
+  double median_fraction() const { return source_diagonal > 0. ? median_distance / source_diagonal : 0.; }
+  /// True when most of the target lies on the source: the median distance
+  /// within `fraction` of the source's diagonal (a remeshed or simplified
+  /// copy stays well under the default 1 %; a moved or rotated copy does not).
+  bool lies_on_source(double fraction = 0.01) const { return median_fraction() <= fraction; }
+};
 
 /// The label of each face of `target`: the label of the face of `source`
 /// nearest to its centroid (Euclidean, through an AABB tree of `source`).
 ///
 /// \tparam SourceMesh a `FaceListGraph` with internal face index and vertex points (Epick points)
 /// \param source_labels #F(source) entries, by face index
+/// \param report if given, receives how far the target lies from the source
 /// \returns #F(target) entries, by face index
 template <class SourceMesh, class TargetMesh>
 std::vector<int> nearest_face_labels(const SourceMesh& source, const std::vector<int>& source_labels,
-                                     const TargetMesh& target)
+                                     const TargetMesh& target, Nearest_face_report* report = nullptr)
 {
   using Point_3 = typename boost::property_traits<
       typename boost::property_map<SourceMesh, CGAL::vertex_point_t>::const_type>::value_type;
@@ -41,6 +59,8 @@ std::vector<int> nearest_face_labels(const SourceMesh& source, const std::vector
   auto target_index = get(boost::face_index, target);
   auto target_points = get(CGAL::vertex_point, target);
   std::vector<int> labels(num_faces(target), 0);
+  std::vector<double> distances;
+  if(report) distances.reserve(num_faces(target));
   for(auto f : faces(target)) {
     double x = 0., y = 0., z = 0.;
     int n = 0;
@@ -51,8 +71,21 @@ std::vector<int> nearest_face_labels(const SourceMesh& source, const std::vector
       z += CGAL::to_double(p.z());
       ++n;
     }
-    const auto nearest = tree.closest_point_and_primitive(Point_3(x / n, y / n, z / n));
+    const Point_3 centroid(x / n, y / n, z / n);
+    const auto nearest = tree.closest_point_and_primitive(centroid);
     labels[get(target_index, f)] = source_labels[get(source_index, nearest.second)];
+    if(report) distances.push_back(std::sqrt(CGAL::to_double(CGAL::squared_distance(centroid, nearest.first))));
+  }
+  if(report) {
+    *report = Nearest_face_report();
+    if(!distances.empty()) {
+      auto middle = distances.begin() + static_cast<std::ptrdiff_t>(distances.size() / 2);
+      std::nth_element(distances.begin(), middle, distances.end());
+      report->median_distance = *middle;
+    }
+    const auto box = tree.bbox();
+    report->source_diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
+                                        CGAL::square(box.zmax() - box.zmin()));
   }
   return labels;
 }
