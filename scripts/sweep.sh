@@ -113,8 +113,11 @@ for mesh in "${meshes[@]}"; do
     elif [ -n "$(grep -v -E '^diffuv: warning: ' "$log.stderr")" ]; then
       outcome=BAD detail="exit 0 with other text on stderr: $(grep -v -E '^diffuv: warning: ' "$log.stderr" | head -n1)"
     else
-      patches=$(sed -n 2p "$log.stdout" | grep -o -E '^[0-9]+ patch(es)?' || true)
+      patches=$(grep -m1 -o -E '^[0-9]+ patch(es)?' "$log.stdout" || true)
       [ -n "$patches" ] || patches=$(sed -n 2p "$log.stdout" | cut -c1-60)
+      # What reading repaired (issue #21), after the patches.
+      repaired=$(grep -m1 '^repaired: ' "$log.stdout" | sed 's/ (--strict-input refuses such a file)//' || true)
+      [ -z "$repaired" ] || patches+="; $repaired"
       if [ -n "$warning" ]; then
         outcome=partial detail="$patches; warning: $warning"
       else

@@ -204,6 +204,15 @@ TEST_F(Correspond, MissingLabelsSayHowToProvideThem)
   EXPECT_NE(only_a.err.find("--transfer-labels"), std::string::npos) << only_a.err;
   EXPECT_FALSE(fs::exists(out_dir()));
 
+  // B moved away from A: labels by nearest face would all be wrong; refused.
+  const Tool_run moved = run("correspond " + a_ + ' ' + b + " --labels-a " + labels_a_ + " --transfer-labels -o " +
+                             out_dir().string());
+  EXPECT_EQ(moved.code, 1);
+  EXPECT_EQ(moved.err.rfind("diffuv: error: " + b + ": does not lie on " + a_ + " (the median distance from its faces to A is ", 0), 0u)
+      << moved.err;
+  EXPECT_NE(moved.err.find("--labels-b"), std::string::npos) << moved.err;
+  EXPECT_FALSE(fs::exists(out_dir()));
+
   // B on top of A (not moved): its labels can come from A's nearest faces.
   std::ostringstream on_top;
   on_top.precision(17);

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -134,6 +136,65 @@ TEST_F(Tool, PatchesOnADiscLayItOut)
   const Tool_run closed = run("segment " + data_path("meshes/cow.off") + " --patches 5 -o " + (dir_ / "e").string());
   ASSERT_EQ(closed.code, 0) << closed.err;
   EXPECT_EQ(closed.err, "");
+}
+
+// Issue #21: vertex colours are regions only when they look painted. Cow as
+// COFF, its vertices coloured in four height bands (painting) or each with a
+// colour of its own (a scan, a transferred field).
+TEST_F(Tool, VertexColoursAreRegionsOnlyWhenTheyLookPainted)
+{
+  const diffuv_test::File_soup cow = diffuv_test::parse_off(data_path("meshes/cow.off"));
+  double low = 1e300, high = -1e300;
+  for(const auto& p : cow.points) {
+    low = std::min(low, p[1]);
+    high = std::max(high, p[1]);
+  }
+  const auto write_coff = [&](const std::string& name, auto color_of) {
+    std::ostringstream off;
+    off.precision(17);
+    off << "COFF\n" << cow.points.size() << ' ' << cow.faces.size() << " 0\n";
+    for(std::size_t i = 0; i < cow.points.size(); ++i) {
+      const auto c = color_of(i);
+      off << cow.points[i][0] << ' ' << cow.points[i][1] << ' ' << cow.points[i][2] << ' ' << c[0] << ' ' << c[1] << ' '
+          << c[2] << " 255\n";
+    }
+    for(const auto& f : cow.faces) off << "3 " << f[0] << ' ' << f[1] << ' ' << f[2] << '\n';
+    return write(name, off.str());
+  };
+  const std::string bands = write_coff("bands.off", [&](std::size_t i) {
+    const int band = std::min(3, static_cast<int>(4 * (cow.points[i][1] - low) / (high - low)));
+    return std::array<int, 3>{{60 * band, 200, 100}};
+  });
+  const std::string scan = write_coff("scan.off", [](std::size_t i) {
+    return std::array<int, 3>{{static_cast<int>(i % 256), static_cast<int>(i / 256 % 256), 7}};
+  });
+
+  const Tool_run painted = run("segment " + bands + " -o " + (dir_ / "a").string());
+  ASSERT_EQ(painted.code, 0) << painted.err;
+  EXPECT_NE(painted.out.find("regions painted in the mesh file"), std::string::npos) << painted.out;
+  EXPECT_EQ(painted.err, "");
+
+  const Tool_run scanned = run("segment " + scan + " -o " + (dir_ / "b").string());
+  ASSERT_EQ(scanned.code, 0) << scanned.err;
+  EXPECT_EQ(scanned.out.find("painted"), std::string::npos) << scanned.out;
+  EXPECT_EQ(scanned.err.rfind("diffuv: warning: " + scan + ": " + std::to_string(cow.points.size()) +
+                                  " distinct vertex colours in ", 0), 0u) << scanned.err;
+  EXPECT_NE(scanned.err.find("areas: not taken as regions (--regions-from colors takes them)\n"), std::string::npos)
+      << scanned.err;
+  // The same patches as the mesh without colours.
+  const Tool_run plain = run("segment " + data_path("meshes/cow.off") + " -o " + (dir_ / "c").string());
+  ASSERT_EQ(plain.code, 0) << plain.err;
+  EXPECT_TRUE(slurp(dir_ / "b" / "scan.patches.txt") == slurp(dir_ / "c" / "cow.patches.txt"));
+
+  // Asked for: the scan's colours are regions (and merged where too small to map).
+  const Tool_run forced = run("segment " + scan + " --regions-from colors -o " + (dir_ / "d").string());
+  ASSERT_EQ(forced.code, 0) << forced.err;
+  EXPECT_NE(forced.out.find("regions painted in the mesh file"), std::string::npos) << forced.out;
+  // Painting ignored on request.
+  const Tool_run ignored = run("segment " + bands + " --regions-from none -o " + (dir_ / "e").string());
+  ASSERT_EQ(ignored.code, 0) << ignored.err;
+  EXPECT_EQ(ignored.out.find("painted"), std::string::npos) << ignored.out;
+  EXPECT_TRUE(slurp(dir_ / "e" / "bands.patches.txt") == slurp(dir_ / "c" / "cow.patches.txt"));
 }
 
 } // namespace

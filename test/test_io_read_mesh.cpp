@@ -9,11 +9,16 @@
 // compared with CGAL's read_OBJ() and read_PLY(), whose answers they must give.
 #include "test_data.h"
 
+#include <diffuv/io/read_labels.h>
 #include <diffuv/io/read_mesh.h>
 
 #include <CGAL/IO/OBJ.h>
+#include <CGAL/IO/OFF.h>
 #include <CGAL/IO/PLY.h>
 #include <CGAL/IO/polygon_soup_io.h>
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
+#include <CGAL/Polygon_mesh_processing/manifoldness.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
 
 #include <gtest/gtest.h>
 
@@ -44,14 +49,19 @@ using face_descriptor = boost::graph_traits<Mesh>::face_descriptor;
 
 using IoReadMesh = diffuv_test::Temp_dir_test;
 
-// Reads `file` and returns the Input_error it must throw.
-diffuv::Input_error read_error(const std::string& file)
+// Reads `file` (with the repairs, or refusing what needs one) and returns the
+// Input_error it must throw.
+diffuv::Input_error read_error(const std::string& file, bool repair = true)
 {
   return diffuv_test::input_error([&] {
     Mesh mesh;
-    diffuv::read_triangle_mesh(file, mesh);
+    diffuv::Mesh_read_options options;
+    options.repair = repair;
+    diffuv::read_triangle_mesh(file, mesh, options);
   });
 }
+
+diffuv::Input_error strict_read_error(const std::string& file) { return read_error(file, false); }
 
 // ---------------------------------------------------------------------------
 // Hand-written parsers of the real files: the expected points and faces
@@ -186,12 +196,11 @@ TEST(IoReadMeshReal, BinaryStlNumbersPointsByFirstAppearance)
   expect_same_as_file(file, soup);
 }
 
-// pig.stl touches itself at single points: CGAL's read_polygon_mesh would
-// silently duplicate those vertices (changing the numbering); we refuse.
+// pig.stl touches itself at single points: without the repair, refused.
 TEST(IoReadMeshReal, PigStlHasNonManifoldVertices)
 {
   const std::string file = diffuv_test::data_path("meshes/pig.stl");
-  const diffuv::Input_error e = read_error(file);
+  const diffuv::Input_error e = strict_read_error(file);
   EXPECT_EQ(e.line(), 0u);
   EXPECT_EQ(e.reason(), "non-manifold edge or vertex, or inconsistent orientation "
                         "(the faces around vertex 90 form 2 separate fans)");
@@ -321,7 +330,7 @@ TEST_F(IoReadMesh, ObjErrorsHaveALine)
   int k = 0;
   for(const Case& c : cases) {
     const std::string file = write("case" + std::to_string(k++) + ".obj", c.content);
-    const diffuv::Input_error e = read_error(file);
+    const diffuv::Input_error e = strict_read_error(file);
     EXPECT_EQ(e.reason(), c.reason) << c.content;
     EXPECT_EQ(e.line(), c.line) << c.content;
   }
@@ -1436,7 +1445,7 @@ TEST_F(IoReadMesh, FaceWithFewerThanThreeOrRepeatedVertices)
   diffuv::Input_error e = read_error(write("a.off", "OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n2 0 1\n"));
   EXPECT_EQ(e.reason(), "face 1 has only 2 vertices");
   EXPECT_EQ(e.line(), 7u);
-  e = read_error(write("b.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n3 0 1 2\n4 1 3 2 3\n"));
+  e = strict_read_error(write("b.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n3 0 1 2\n4 1 3 2 3\n"));
   EXPECT_EQ(e.reason(), "face 1 uses vertex 3 twice");
   EXPECT_EQ(e.line(), 8u);
 }
@@ -1445,17 +1454,17 @@ TEST_F(IoReadMesh, NonManifoldOrInconsistentSoups)
 {
   const std::string points = "0 0 0\n1 0 0\n0 1 0\n0 -1 0\n0 0 1\n";
   // Three faces on the edge 0-1.
-  diffuv::Input_error e = read_error(write("edge.off", "OFF\n5 3 0\n" + points + "3 0 1 2\n3 1 0 3\n3 0 1 4\n"));
+  diffuv::Input_error e = strict_read_error(write("edge.off", "OFF\n5 3 0\n" + points + "3 0 1 2\n3 1 0 3\n3 0 1 4\n"));
   EXPECT_EQ(e.reason(), "non-manifold edge or vertex, or inconsistent orientation "
                         "(faces 0 and 2 both go from vertex 0 to vertex 1)");
   EXPECT_EQ(e.line(), 10u);
   // Two faces that disagree on the orientation of their common edge.
-  e = read_error(write("orientation.off", "OFF\n5 2 0\n" + points + "3 0 1 2\n3 0 1 3\n"));
+  e = strict_read_error(write("orientation.off", "OFF\n5 2 0\n" + points + "3 0 1 2\n3 0 1 3\n"));
   EXPECT_EQ(e.reason(), "non-manifold edge or vertex, or inconsistent orientation "
                         "(faces 0 and 1 both go from vertex 0 to vertex 1)");
   EXPECT_EQ(e.line(), 9u);
   // Two triangles touching at vertex 0 only (a bow tie).
-  e = read_error(write("bowtie.off", "OFF\n5 2 0\n" + points + "3 0 1 2\n3 0 3 4\n"));
+  e = strict_read_error(write("bowtie.off", "OFF\n5 2 0\n" + points + "3 0 1 2\n3 0 3 4\n"));
   EXPECT_EQ(e.reason(), "non-manifold edge or vertex, or inconsistent orientation "
                         "(the faces around vertex 0 form 2 separate fans)");
   EXPECT_EQ(e.line(), 0u);
@@ -1568,6 +1577,298 @@ TEST_F(IoReadMesh, TriangulationMustNotDuplicateAnEdge)
   const diffuv::Input_error e = read_error(write("pillow.off", content));
   EXPECT_EQ(e.reason(), "face 0 cannot be triangulated without a second edge between vertices 0 and 2");
   EXPECT_EQ(e.line(), 7u);
+}
+
+// ---------------------------------------------------------------------------
+// Repair (the default): no point moves, the file's points keep their numbers
+
+Mesh read_repaired(const std::string& file, diffuv::Mesh_read_report& report)
+{
+  Mesh mesh;
+  report = diffuv::read_triangle_mesh(file, mesh);
+  return mesh;
+}
+
+// Every vertex sits where the file's point it stands for sits; points merged
+// into another stay where they were, used by no face.
+void expect_no_point_moved(const Mesh& mesh, const diffuv::Mesh_read_report& report, const File_soup& soup)
+{
+  ASSERT_EQ(report.vertices, soup.points.size());
+  std::size_t moved = 0, bad_copies = 0;
+  for(vertex_descriptor v : vertices(mesh)) {
+    const std::size_t i = report.point_of(v.idx());
+    ASSERT_LT(i, soup.points.size());
+    if(v.idx() >= soup.points.size() && i == v.idx()) ++bad_copies; // a copy must name its point
+    const auto& q = soup.points[i];
+    if(mesh.point(v) != Point_3(q[0], q[1], q[2])) ++moved;
+  }
+  EXPECT_EQ(moved, 0u);
+  EXPECT_EQ(bad_copies, 0u);
+  for(std::size_t i = 0; i < soup.points.size(); ++i) {
+    const std::size_t v = report.vertex_of(i);
+    EXPECT_LE(v, i);
+    const auto& q = soup.points[i];
+    EXPECT_EQ(mesh.point(Mesh::Vertex_index(static_cast<Mesh::size_type>(v))), Point_3(q[0], q[1], q[2]));
+  }
+}
+
+// Every face of the mesh is its file polygon (a triangle), the points
+// renamed as the repair renamed them: as in the file or turned over.
+// Returns how many are turned over.
+std::size_t faces_turned_over(const Mesh& mesh, const diffuv::Mesh_read_report& report, const File_soup& soup)
+{
+  std::size_t turned = 0, other = 0;
+  EXPECT_EQ(report.file_face.size(), num_faces(mesh));
+  for(face_descriptor f : faces(mesh)) {
+    std::vector<std::size_t> corners;
+    for(std::size_t v : diffuv_test::face_vertex_numbers(mesh, f)) corners.push_back(report.point_of(v));
+    std::vector<std::size_t> polygon;
+    for(std::size_t i : soup.faces[report.file_face[f.idx()]]) polygon.push_back(report.vertex_of(i));
+    std::vector<std::size_t> reversed(polygon.rbegin(), polygon.rend());
+    for(std::size_t& i : corners) i = report.vertex_of(i);
+    if(diffuv_test::same_cycle(corners, reversed)) ++turned;
+    else if(!diffuv_test::same_cycle(corners, polygon)) ++other;
+  }
+  EXPECT_EQ(other, 0u);
+  return turned;
+}
+
+std::size_t non_manifold_vertex_count(const Mesh& mesh)
+{
+  std::vector<Mesh::Halfedge_index> found;
+  CGAL::Polygon_mesh_processing::non_manifold_vertices(mesh, std::back_inserter(found));
+  return found.size();
+}
+
+// The soup as CGAL's OFF reader reads it (comments and all), in file order.
+File_soup cgal_off_soup(const std::string& file)
+{
+  std::vector<Point_3> points;
+  std::vector<std::vector<std::size_t>> polygons;
+  EXPECT_TRUE(CGAL::IO::read_OFF(file, points, polygons)) << file;
+  File_soup soup;
+  for(const Point_3& p : points) soup.points.push_back({p.x(), p.y(), p.z()});
+  soup.faces = polygons;
+  return soup;
+}
+
+TEST(IoReadMeshRepair, ShuffledMeshesAreOrientedAsTheirOriginals)
+{
+  // CGAL's *-shuffled.off have faces turned over at random; blobby, cube and
+  // oblong also come as they should be.
+  for(const std::string name : {"blobby", "cube", "oblong", "cube4", "tet"}) {
+    SCOPED_TRACE(name);
+    const std::string file = diffuv_test::data_path("meshes/" + name + "-shuffled.off");
+    EXPECT_EQ(strict_read_error(file).reason().rfind("non-manifold edge or vertex, or inconsistent orientation", 0), 0u);
+    diffuv::Mesh_read_report report;
+    const Mesh mesh = read_repaired(file, report);
+    const File_soup soup = cgal_off_soup(file);
+    EXPECT_GT(report.repair.faces_reoriented, 0u);
+    EXPECT_EQ(report.repair.vertex_copies, 0u);
+    EXPECT_TRUE(CGAL::is_closed(mesh));
+    EXPECT_EQ(non_manifold_vertex_count(mesh), 0u);
+    expect_no_point_moved(mesh, report, soup);
+    if(report.polygons_triangulated == 0) EXPECT_EQ(faces_turned_over(mesh, report, soup), report.repair.faces_reoriented);
+    const double volume = CGAL::to_double(CGAL::Polygon_mesh_processing::volume(mesh));
+    const std::string original = diffuv_test::data_path("meshes/" + name + ".off");
+    if(std::filesystem::exists(original)) {
+      Mesh good;
+      diffuv::read_triangle_mesh(original, good);
+      const double expected = CGAL::to_double(CGAL::Polygon_mesh_processing::volume(good));
+      EXPECT_NEAR(volume, expected, 1e-6 * std::abs(expected));
+    } else {
+      EXPECT_GT(volume, 0.); // outward, as most of its faces are
+    }
+  }
+}
+
+TEST(IoReadMeshRepair, PigStlNonManifoldVerticesAreSplit)
+{
+  const std::string file = diffuv_test::data_path("meshes/pig.stl");
+  diffuv::Mesh_read_report report;
+  const Mesh mesh = read_repaired(file, report);
+  const File_soup soup = parse_binary_stl(file);
+  EXPECT_GT(report.repair.vertices_split, 0u);
+  EXPECT_GE(report.repair.vertex_copies, report.repair.vertices_split);
+  EXPECT_EQ(num_vertices(mesh), soup.points.size() + report.repair.vertex_copies);
+  EXPECT_EQ(num_faces(mesh), soup.faces.size());
+  EXPECT_EQ(non_manifold_vertex_count(mesh), 0u);
+  expect_no_point_moved(mesh, report, soup);
+  EXPECT_EQ(faces_turned_over(mesh, report, soup), report.repair.faces_reoriented);
+}
+
+// Every face written with its own three points (an unwelded export): with
+// the repair, one closed cow; without it, a valid but useless soup of
+// separate triangles.
+TEST_F(IoReadMesh, UnweldedFacesAreStitched)
+{
+  const File_soup cow = diffuv_test::parse_off(diffuv_test::data_path("meshes/cow.off"));
+  std::ostringstream off;
+  off << std::setprecision(17) << "OFF\n" << 3 * cow.faces.size() << ' ' << cow.faces.size() << " 0\n";
+  for(const auto& f : cow.faces)
+    for(std::size_t i : f) off << cow.points[i][0] << ' ' << cow.points[i][1] << ' ' << cow.points[i][2] << '\n';
+  for(std::size_t j = 0; j < cow.faces.size(); ++j) off << "3 " << 3 * j << ' ' << 3 * j + 1 << ' ' << 3 * j + 2 << '\n';
+  const std::string file = write("unwelded.off", off.str());
+  const File_soup soup = diffuv_test::parse_off(file);
+
+  diffuv::Mesh_read_report report;
+  const Mesh mesh = read_repaired(file, report);
+  EXPECT_EQ(report.repair.points_merged, 3 * cow.faces.size() - cow.points.size());
+  EXPECT_EQ(report.isolated_vertices, report.repair.points_merged);
+  EXPECT_EQ(report.repair.faces_reoriented, 0u);
+  EXPECT_EQ(num_faces(mesh), cow.faces.size());
+  EXPECT_TRUE(CGAL::is_closed(mesh));
+  EXPECT_EQ(non_manifold_vertex_count(mesh), 0u);
+  expect_no_point_moved(mesh, report, soup);
+  EXPECT_EQ(faces_turned_over(mesh, report, soup), 0u);
+  std::vector<std::size_t> component(num_faces(mesh));
+  EXPECT_EQ(CGAL::Polygon_mesh_processing::connected_components(
+                mesh, CGAL::make_property_map(component)), 1u);
+
+  Mesh apart;
+  diffuv::Mesh_read_options strict;
+  strict.repair = false;
+  diffuv::read_triangle_mesh(file, apart, strict);
+  std::vector<std::size_t> apart_component(num_faces(apart));
+  EXPECT_EQ(CGAL::Polygon_mesh_processing::connected_components(
+                apart, CGAL::make_property_map(apart_component)), cow.faces.size());
+}
+
+// STL has no shared points: CGAL's reader merges identical ones, so a closed
+// mesh written as STL is read closed. STL is single precision: two of cow's
+// points become one float point, whose faces then meet in two fans; the
+// repair splits it again (and nothing else is repaired).
+TEST_F(IoReadMesh, StlOfAClosedMeshIsReadClosed)
+{
+  const File_soup cow = diffuv_test::parse_off(diffuv_test::data_path("meshes/cow.off"));
+  std::ostringstream stl;
+  stl << std::setprecision(9) << "solid cow\n";
+  for(const auto& f : cow.faces) {
+    stl << "facet normal 0 0 0\nouter loop\n";
+    for(std::size_t i : f)
+      stl << "vertex " << float(cow.points[i][0]) << ' ' << float(cow.points[i][1]) << ' ' << float(cow.points[i][2]) << '\n';
+    stl << "endloop\nendfacet\n";
+  }
+  stl << "endsolid cow\n";
+  std::vector<std::array<float, 3>> single;
+  for(const auto& p : cow.points) single.push_back({{float(p[0]), float(p[1]), float(p[2])}});
+  std::sort(single.begin(), single.end());
+  const std::size_t distinct = static_cast<std::size_t>(std::unique(single.begin(), single.end()) - single.begin());
+  ASSERT_LT(distinct, cow.points.size()); // what this test is about
+
+  diffuv::Mesh_read_report report;
+  const Mesh mesh = read_repaired(write("cow.stl", stl.str()), report);
+  EXPECT_EQ(report.vertices, distinct);
+  EXPECT_EQ(report.repair.vertices_split, cow.points.size() - distinct);
+  EXPECT_EQ(report.repair.points_merged + report.repair.degenerate_faces + report.repair.duplicate_faces +
+                report.repair.faces_reoriented + report.repair.non_manifold_edges,
+            0u);
+  EXPECT_EQ(num_vertices(mesh), cow.points.size());
+  EXPECT_EQ(num_faces(mesh), cow.faces.size());
+  EXPECT_TRUE(CGAL::is_closed(mesh));
+  EXPECT_EQ(non_manifold_vertex_count(mesh), 0u);
+}
+
+// Labels are numbered by the file's faces: a face dropped or turned over by
+// the repair must not shift them.
+TEST_F(IoReadMesh, LabelsFollowTheFileFacesThroughTheRepair)
+{
+  const std::string points = "0 0 0\n1 0 0\n2 0 0\n0 1 0\n1 1 0\n2 1 0\n0 2 0\n1 2 0\n2 2 0\n";
+  // The 2x2 grid's 8 triangles, with a face using point 4 twice (file face
+  // 2), a copy of face 0 turned over (file face 5), and face 8 turned over.
+  const std::string face_lines = "3 0 1 4\n3 0 4 3\n3 4 4 1\n3 1 2 5\n3 1 5 4\n3 4 1 0\n3 3 4 7\n3 3 7 6\n3 4 8 5\n3 4 8 7\n";
+  const std::string file = write("grid.off", "OFF\n9 10 0\n" + points + face_lines);
+  std::string labels;
+  for(int j = 0; j < 10; ++j) labels += std::to_string(100 + j) + "\n";
+  const std::string label_file = write("grid.labels.txt", labels);
+
+  diffuv::Mesh_read_report report;
+  const Mesh mesh = read_repaired(file, report);
+  EXPECT_EQ(report.repair.degenerate_faces, 1u);
+  EXPECT_EQ(report.repair.duplicate_faces, 1u);
+  EXPECT_EQ(report.repair.faces_reoriented, 1u);
+  ASSERT_EQ(num_faces(mesh), 8u);
+  const std::vector<int> face_labels =
+      diffuv::face_labels_of_mesh(diffuv::read_face_labels(label_file, report.faces_in_file), report);
+  const File_soup soup = diffuv_test::parse_off(file);
+  EXPECT_EQ(faces_turned_over(mesh, report, soup), 1u);
+  for(face_descriptor f : faces(mesh)) {
+    const std::size_t j = report.file_face[f.idx()];
+    EXPECT_NE(j, 2u);
+    EXPECT_NE(j, 5u);
+    EXPECT_EQ(face_labels[f.idx()], 100 + static_cast<int>(j));
+  }
+  // Without the repair: refused, naming the first problem.
+  EXPECT_EQ(strict_read_error(file).reason(), "face 2 uses vertex 4 twice");
+}
+
+// CGAL keeps the orientation of each component's first face; diffuv the
+// orientation of most faces.
+TEST_F(IoReadMesh, MostFacesKeepTheirOrientation)
+{
+  const std::string points = "0 0 0\n1 0 0\n0 1 0\n0 0 1\n";
+  const std::vector<std::string> outward = {"3 0 2 1\n", "3 0 1 3\n", "3 0 3 2\n", "3 1 2 3\n"};
+  for(std::size_t flipped = 0; flipped < 4; ++flipped) {
+    std::string face_lines;
+    for(std::size_t j = 0; j < 4; ++j) {
+      std::istringstream in(outward[j]);
+      std::size_t k, a, b, c;
+      in >> k >> a >> b >> c;
+      face_lines += j == flipped ? "3 " + std::to_string(a) + ' ' + std::to_string(c) + ' ' + std::to_string(b) + '\n'
+                            : outward[j];
+    }
+    diffuv::Mesh_read_report report;
+    const Mesh mesh = read_repaired(write("tet" + std::to_string(flipped) + ".off", "OFF\n4 4 0\n" + points + face_lines), report);
+    EXPECT_EQ(report.repair.faces_reoriented, 1u) << "face " << flipped << " turned over";
+    EXPECT_NEAR(CGAL::to_double(CGAL::Polygon_mesh_processing::volume(mesh)), 1. / 6., 1e-12);
+  }
+}
+
+TEST_F(IoReadMesh, NonManifoldPlacesAreSplit)
+{
+  const std::string points = "0 0 0\n1 0 0\n0 1 0\n0 -1 0\n0 0 1\n";
+  // Two triangles touching at point 0 only (a bow tie): point 0 gets a copy.
+  diffuv::Mesh_read_report report;
+  Mesh mesh = read_repaired(write("bowtie.off", "OFF\n5 2 0\n" + points + "3 0 1 2\n3 0 3 4\n"), report);
+  EXPECT_EQ(report.repair.vertices_split, 1u);
+  EXPECT_EQ(report.repair.vertex_copies, 1u);
+  EXPECT_EQ(num_vertices(mesh), 6u);
+  EXPECT_EQ(report.point_of(5), 0u);
+  EXPECT_EQ(non_manifold_vertex_count(mesh), 0u);
+  // Three faces on the edge 0-1: cut apart, its two ends split.
+  mesh = read_repaired(write("edge.off", "OFF\n5 3 0\n" + points + "3 0 1 2\n3 1 0 3\n3 0 1 4\n"), report);
+  EXPECT_EQ(report.repair.non_manifold_edges, 1u);
+  EXPECT_EQ(report.repair.vertices_split, 2u);
+  EXPECT_EQ(num_vertices(mesh), 5u + report.repair.vertex_copies);
+  EXPECT_EQ(num_faces(mesh), 3u);
+  EXPECT_EQ(non_manifold_vertex_count(mesh), 0u);
+  for(vertex_descriptor v : vertices(mesh)) EXPECT_EQ(mesh.point(v), mesh.point(Mesh::Vertex_index(report.point_of(v.idx()))));
+}
+
+// A Moebius strip of six quads cut in triangles: no orientation agrees
+// everywhere; refused, naming two faces and their edge.
+TEST_F(IoReadMesh, MoebiusStripIsRefused)
+{
+  const int n = 6;
+  std::ostringstream off;
+  off << "OFF\n" << 2 * n << ' ' << 2 * n << " 0\n" << std::setprecision(17);
+  const double pi = 3.14159265358979323846;
+  for(int i = 0; i < n; ++i) {
+    const double t = 2 * pi * i / n;
+    for(double w : {-0.5, 0.5})
+      off << (2 + w * std::cos(t / 2)) * std::cos(t) << ' ' << (2 + w * std::cos(t / 2)) * std::sin(t) << ' '
+          << w * std::sin(t / 2) << '\n';
+  }
+  for(int i = 0; i < n; ++i) {
+    // Quad (2i, 2i+1) -> next; the last one joins the first with a half twist.
+    const int a = 2 * i, b = 2 * i + 1;
+    const int c = i + 1 < n ? 2 * i + 3 : 0, d = i + 1 < n ? 2 * i + 2 : 1;
+    off << "3 " << a << ' ' << b << ' ' << c << "\n3 " << a << ' ' << c << ' ' << d << '\n';
+  }
+  const diffuv::Input_error e = read_error(write("moebius.off", off.str()));
+  EXPECT_EQ(e.reason().rfind("the surface is not orientable (like a Moebius strip): faces ", 0), 0u) << e.reason();
+  EXPECT_NE(e.reason().find(" meet at the edge between vertices "), std::string::npos) << e.reason();
+  EXPECT_GT(e.line(), 2u + 2 * n);
 }
 
 } // namespace

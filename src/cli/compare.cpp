@@ -160,7 +160,7 @@ void run_compare(const Compare_options& options)
   std::size_t flat_triangles_handed = 0;  // faces flat on one side of their patch, handed to a neighbour
   if(!options.corners.empty()) {
     const auto corners =
-        diffuv::selection_vertices(mesh, diffuv::read_selection_file(options.corners), options.corners);
+        selected_vertices(in, options.corners);
     diffuv::Status status = diffuv::check_disc(mesh);
     if(!status) throw diffuv::Input_error(in.path, 0, status.what());
     const auto loop = diffuv::counterclockwise_boundary(mesh, diffuv::boundary_loops(mesh).front());
@@ -264,6 +264,7 @@ void run_compare(const Compare_options& options)
             << count_text(static_cast<std::size_t>(options.runs), "run") << ", times summed over patches";
   if(flat_triangles_handed) std::cout << "; " << flat_triangles_handed_clause(flat_triangles_handed);
   std::cout << "\n";
+  if(const std::string repaired = repair_line(in); !repaired.empty()) std::cout << repaired << '\n';
   Table table({{"method", 18, Table::left},    {"time_ms", 10, Table::right},  {"failed", 7, Table::right},
                {"flipped", 7, Table::right},    {"degen", 5, Table::right},     {"overlaps", 8, Table::right},
                {"angle_avg", 9, Table::right},  {"angle_max", 9, Table::right}, {"area_avg", 9, Table::right},

@@ -47,6 +47,8 @@ struct Correspond_options {
   bool repair = false;
   bool no_clean = false;
   bool no_split_caps = false;
+  bool strict_input = false;
+  std::string regions_from = "auto";
 };
 
 double ms_since(Clock::time_point start)
@@ -160,6 +162,8 @@ void run_correspond(const Correspond_options& o)
   Patch_cli_options pa, pb;
   pa.labels = o.labels_a;
   pb.labels = o.labels_b;
+  pa.strict_input = pb.strict_input = o.strict_input;
+  pa.regions_from = pb.regions_from = o.regions_from;
   // Colours are region names on both meshes: compare them by value. With
   // --transfer-labels, B's colours are data to carry, not regions.
   Paint_reading paint_a, paint_b;
@@ -173,7 +177,17 @@ void run_correspond(const Correspond_options& o)
   if(b.face_labels.empty()) {
     if(!o.transfer_labels) throw diffuv::Input_error(b.path, 0, no_labels_message("--labels-b", true));
     const auto t0 = Clock::now();
-    b.face_labels = diffuv::nearest_face_labels(a.mesh, a.face_labels, b.mesh);
+    diffuv::Nearest_face_report lying;
+    b.face_labels = diffuv::nearest_face_labels(a.mesh, a.face_labels, b.mesh, &lying);
+    if(!lying.lies_on_source()) {
+      std::ostringstream what;
+      what.precision(2);
+      what << std::fixed << "does not lie on " << a.path << " (the median distance from its faces to A is "
+           << 100. * lying.median_fraction() << " % of A's bounding-box diagonal, more than 1 %): --transfer-labels "
+           << "carries labels to a copy of A in A's place (remeshed, repaired, re-exported); give B's own regions "
+           << "with --labels-b or paint them";
+      throw diffuv::Input_error(b.path, 0, what.str());
+    }
     transfer_ms = ms_since(t0);
     b.label_source = "labels of A's nearest faces (--transfer-labels)";
   }
@@ -285,7 +299,10 @@ void run_correspond(const Correspond_options& o)
             << "B: " << count_text(num_vertices(b.mesh), "vertex", "vertices") << ", "
             << count_text(atlas_b.segmentation.number_of_patches(), "patch", "patches") << " (" << b.label_source << "; "
             << cleaning_text(atlas_b.cleaning, !o.no_clean) << ")\n"
-            << "regions matched: " << count_text(match.matched_labels.size(), "label") << ", "
+            ;
+  if(const std::string repaired = repair_line(a); !repaired.empty()) std::cout << "A " << repaired << '\n';
+  if(const std::string repaired = repair_line(b); !repaired.empty()) std::cout << "B " << repaired << '\n';
+  std::cout << "regions matched: " << count_text(match.matched_labels.size(), "label") << ", "
             << count_text(match.matched_patches, "patch", "patches") << "\n";
   if(!match.labels_only_in_a.empty())
     std::cout << "labels only in A (not mapped): " << label_list(match.labels_only_in_a) << '\n';
@@ -358,6 +375,8 @@ void add_correspond_command(CLI::App& app)
                 "Use the labels as they are (default: islands absorbed, jagged borders smoothed, pinches undone; "
                 "see doc/correspondence.md)");
   cmd->add_flag("--no-split-caps", options->no_split_caps, "Keep caps whole (on both meshes)");
+  add_strict_input_option(cmd, options->strict_input);
+  add_regions_from_option(cmd, options->regions_from);
   cmd->footer("Writes OUTPUT/correspondence.csv (vertex,face,b0,b1,b2,x,y,z: one row per vertex of A in file order; "
               "face indexes B's faces in file order, b0..b2 weight that face's vertices in the order the file lists "
               "them, x,y,z is the point on B; face -1: not mapped), OUTPUT/transfer.ply (A with B's vertex colours, "

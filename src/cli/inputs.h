@@ -8,9 +8,11 @@
 #include <diffuv/core/error.h>
 #include <diffuv/graph/distance_tags.h>
 #include <diffuv/core/color.h>
+#include <diffuv/io/paint_look.h>
 #include <diffuv/io/painted_labels.h>
 #include <diffuv/io/read_labels.h>
 #include <diffuv/io/read_mesh.h>
+#include <diffuv/io/selection_file.h>
 #include <diffuv/internal/message_text.h>
 #include <diffuv/parameterization/layout_judge.h>
 #include <diffuv/layout/disc_patches.h>
@@ -20,6 +22,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <cstdlib>
 #include <iostream>
 #include <filesystem>
@@ -51,6 +54,8 @@ struct Patch_cli_options {
   bool no_split_caps = false;
   bool keep_flat_triangles = false;
   bool strict = false;
+  bool strict_input = false;     // refuse a mesh file that needs a repair instead of repairing it
+  std::string regions_from = "auto"; // auto | labels | colors | none: what in the mesh file names regions
   std::size_t threads = 0;       // threads that map the patches while the layout is refined
 };
 
@@ -73,6 +78,26 @@ inline CLI::Validator number_in(double low, double high, bool whole = true)
   std::ostringstream name;
   name << (whole ? "INT in [" : "NUMBER in [") << low << " - " << high << "]";
   return CLI::Validator([=](const std::string& s) { return range_problem(s, low, high, whole); }, name.str());
+}
+
+inline void add_strict_input_option(CLI::App* cmd, bool& strict_input)
+{
+  cmd->add_flag("--strict-input", strict_input,
+                "Refuse a mesh file that is not a manifold, consistently oriented mesh, naming the problem, instead of "
+                "repairing it (by default borders that coincide are stitched, faces that use a point twice or repeat "
+                "another are dropped, faces are oriented consistently and non-manifold vertices are split; no point "
+                "moves and the file's points keep their numbers)");
+}
+
+inline void add_regions_from_option(CLI::App* cmd, std::string& regions_from)
+{
+  cmd->add_option("--regions-from", regions_from,
+                  "What in the mesh file names regions when no --labels file is given: auto (face colours and integer "
+                  "label properties; vertex colours only when they look painted: at most 256 colours in at most 2 "
+                  "connected areas per colour + 16, else they are ignored with a warning), labels (label properties only, colours "
+                  "ignored), colors (also vertex colours that do not look painted), none (automatic patches)")
+      ->check(CLI::IsMember({"auto", "labels", "colors", "none"}))
+      ->capture_default_str();
 }
 
 inline void add_patch_options(CLI::App* cmd, Patch_cli_options& o)
@@ -107,6 +132,8 @@ inline void add_patch_options(CLI::App* cmd, Patch_cli_options& o)
                 "any map onto the square) instead of handing it to a neighbouring patch, and every face in its "
                 "labelled region even when it juts out of it by two edges");
   cmd->add_flag("--strict", o.strict, "Report a region that is not a disc instead of cutting it into discs");
+  add_strict_input_option(cmd, o.strict_input);
+  add_regions_from_option(cmd, o.regions_from);
 }
 
 /// Refuses option combinations that would be silently ignored.
@@ -147,14 +174,27 @@ inline Input_mesh read_input(const std::string& path, const Patch_cli_options& o
 {
   Input_mesh in;
   in.path = path;
-  in.report = diffuv::read_triangle_mesh(path, in.mesh);
+  diffuv::Mesh_read_options reading;
+  reading.repair = !o.strict_input;
+  in.report = diffuv::read_triangle_mesh(path, in.mesh, reading);
   std::vector<int> polygon_labels;
   if(!o.labels.empty()) {
     polygon_labels = diffuv::read_face_labels(o.labels, in.report.faces_in_file);
     in.label_source = "labels from " + o.labels;
     in.labels_path = o.labels;
-  } else if(paint.read) {
-    diffuv::Painted_labels painted = diffuv::read_painted_labels(path);
+  } else if(paint.read && o.regions_from != "none") {
+    diffuv::Painted_labels painted = diffuv::read_painted_labels(path, std::string(), o.regions_from != "labels");
+    if(painted.source == diffuv::Label_source::vertex_colors && o.regions_from == "auto") {
+      // A coloured scan or a transferred field is data, not regions.
+      const diffuv::Paint_look look = diffuv::look_of_paint(
+          in.mesh, diffuv::face_labels_of_mesh(painted.polygon_labels, in.report), painted.colors.size());
+      if(!look.painted) {
+        std::cerr << "diffuv: warning: " << path << ": "
+                  << count_text(look.colors, "distinct vertex colour", "distinct vertex colours") << " in "
+                  << count_text(look.areas, "area") << ": not taken as regions (--regions-from colors takes them)\n";
+        painted = diffuv::Painted_labels();
+      }
+    }
     if(painted.source != diffuv::Label_source::none) {
       polygon_labels = std::move(painted.polygon_labels);
       in.label_source = "regions painted in the mesh file (" + painted.property + ")";
@@ -173,8 +213,47 @@ inline Input_mesh read_input(const std::string& path, const Patch_cli_options& o
       }
     }
   }
-  if(!polygon_labels.empty()) in.face_labels = diffuv::face_labels_of_mesh(polygon_labels, in.report);
+  if(!polygon_labels.empty()) {
+    in.face_labels = diffuv::face_labels_of_mesh(polygon_labels, in.report);
+    // Thousands of regions take a while to lay out (seconds per ten thousand): say so first.
+    std::vector<int> distinct = in.face_labels;
+    std::sort(distinct.begin(), distinct.end());
+    const std::size_t regions = static_cast<std::size_t>(std::unique(distinct.begin(), distinct.end()) - distinct.begin());
+    if(regions > 2000)
+      std::cerr << "diffuv: " << path << ": " << regions << " regions (" << in.label_source
+                << "); laying them out may take a while" << std::endl;
+  }
   return in;
+}
+
+/// What reading repaired, for the summary ("repaired: 12 faces reoriented, 1
+/// non-manifold vertex split"), or an empty string.
+inline std::string repair_line(const Input_mesh& in)
+{
+  const diffuv::Mesh_repair_report& r = in.report.repair;
+  std::vector<std::string> parts;
+  if(r.points_merged) parts.push_back(count_text(r.points_merged, "coinciding point") + " merged (borders stitched)");
+  if(r.degenerate_faces) parts.push_back(count_text(r.degenerate_faces, "face") + " using a point twice dropped");
+  if(r.duplicate_faces) parts.push_back(count_text(r.duplicate_faces, "duplicate face") + " dropped");
+  if(r.faces_reoriented) parts.push_back(count_text(r.faces_reoriented, "face") + " reoriented");
+  if(r.non_manifold_edges) parts.push_back(count_text(r.non_manifold_edges, "non-manifold edge") + " cut");
+  if(r.vertices_split)
+    parts.push_back(count_text(r.vertices_split, "non-manifold vertex", "non-manifold vertices") + " split (" +
+                    count_text(r.vertex_copies, "copy", "copies") + " added)");
+  if(parts.empty()) return std::string();
+  std::string line = "repaired:";
+  for(std::size_t k = 0; k < parts.size(); ++k) line += (k ? ", " : " ") + parts[k];
+  return line + " (--strict-input refuses such a file)";
+}
+
+/// The vertices named by a selection file (corners, sources): indices of the
+/// mesh file's points, each the vertex that stands for it after the repair.
+inline std::vector<Mesh::Vertex_index> selected_vertices(const Input_mesh& in, const std::string& selection_path)
+{
+  std::vector<std::size_t> indices = diffuv::read_selection_file(selection_path);
+  for(std::size_t& i : indices)
+    if(i < in.report.vertices) i = in.report.vertex_of(i);
+  return diffuv::selection_vertices(in.mesh, indices, selection_path);
 }
 
 /// Warns on stderr of the input's faces of zero area (their (u,v) triangles

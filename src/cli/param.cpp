@@ -71,7 +71,7 @@ void run_param(const Param_options& options)
 
   std::vector<Mesh::Vertex_index> corners;
   if(!options.corners.empty())
-    corners = diffuv::selection_vertices(in.mesh, diffuv::read_selection_file(options.corners), options.corners);
+    corners = selected_vertices(in, options.corners);
 
   // --runs repeats everything after reading and reports the median time.
   Parameterization result;

@@ -73,6 +73,7 @@ void print_summary(const Param_run& run, const Param_options& options)
     std::cout << ", " << count_text(in.report.isolated_vertices, "isolated vertex", "isolated vertices")
               << " (in no face: no (u,v))";
   std::cout << '\n';
+  if(const std::string repaired = repair_line(in); !repaired.empty()) std::cout << repaired << '\n';
   if(!options.corners.empty()) {
     const auto& c = result.patches.front().sides.corners;
     std::cout << "corners (0,0) (1,0) (1,1) (0,1): vertices " << c[0].idx() << ' ' << c[1].idx() << ' ' << c[2].idx()

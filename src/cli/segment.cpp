@@ -60,8 +60,9 @@ void run_segment(const Segment_options& options)
     largest = std::max(largest, faces_of_patch.size());
   }
   std::cout << "diffuv segment " << in.path << ": " << count_text(num_vertices(in.mesh), "vertex", "vertices") << ", "
-            << count_text(num_faces(in.mesh), "face") << '\n'
-            << count_text(seg.number_of_patches(), "patch", "patches") << " ("
+            << count_text(num_faces(in.mesh), "face") << '\n';
+  if(const std::string repaired = repair_line(in); !repaired.empty()) std::cout << repaired << '\n';
+  std::cout << count_text(seg.number_of_patches(), "patch", "patches") << " ("
             << (!in.label_source.empty() ? in.label_source
                 : report.automatic       ? "automatic"
                 : report.components > 1  ? "each component a whole disc"

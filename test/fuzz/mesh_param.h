@@ -55,7 +55,18 @@ inline void mesh_param(const std::uint8_t* data, std::size_t size)
   }
   diffuv_fuzz::note(path + ": " + std::to_string(report.vertices) + " vertices, " + std::to_string(report.faces) +
                     " faces, " + (face_labels.empty() ? "no labels" : "painted labels"));
-  check(report.vertices == num_vertices(mesh), "report.vertices differs from the mesh");
+  check(report.vertices + report.repair.vertex_copies == num_vertices(mesh),
+        "the file's points and the repair's copies are not the mesh's vertices");
+  // The repair moves no point: a copy sits on its point, a merged point on the one it merged into.
+  for(Mesh::Vertex_index v : vertices(mesh)) {
+    check(report.point_of(v.idx()) < report.vertices, "a vertex copies no point of the file");
+    check(mesh.point(v) == mesh.point(Mesh::Vertex_index(static_cast<Mesh::size_type>(report.point_of(v.idx())))),
+          "a copy of a point is not where the point is");
+  }
+  for(std::size_t i = 0; i < report.vertices; ++i)
+    check(mesh.point(Mesh::Vertex_index(static_cast<Mesh::size_type>(report.vertex_of(i)))) ==
+              mesh.point(Mesh::Vertex_index(static_cast<Mesh::size_type>(i))),
+          "a point merged into one at another position");
   check(report.faces == num_faces(mesh), "report.faces differs from the mesh");
   check(report.file_face.size() == report.faces, "report.file_face has not one entry per face");
   for(std::size_t j : report.file_face) check(j < report.faces_in_file, "report.file_face out of range");

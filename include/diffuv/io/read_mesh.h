@@ -27,6 +27,7 @@
 #include <diffuv/io/internal/off_scanner.h>
 #include <diffuv/io/internal/ply_scanner.h>
 #include <diffuv/io/internal/polygon_soup_checks.h>
+#include <diffuv/io/internal/repair_polygon_soup.h>
 #include <diffuv/io/internal/triangulate_polygons.h>
 
 #include <CGAL/IO/STL.h>
@@ -51,17 +52,40 @@ namespace diffuv {
 
 /// What `read_triangle_mesh()` read and what it changed.
 struct Mesh_read_report {
-  std::size_t vertices = 0;              ///< points of the file = vertices of the mesh, in the same order
+  std::size_t vertices = 0;              ///< points of the file = the first vertices of the mesh, in the same order (copies of split points follow)
   std::size_t faces_in_file = 0;         ///< polygons of the file
   std::size_t polygons_triangulated = 0; ///< polygons of more than three vertices split into triangles
   std::size_t faces = 0;                 ///< triangles of the mesh
   std::size_t degenerate_faces = 0;      ///< triangles of zero area (collinear or coinciding corners)
-  std::size_t isolated_vertices = 0;     ///< points used by no face, kept so that indices stay those of the file
+  std::size_t isolated_vertices = 0;     ///< points used by no face (or merged into another), kept so that indices stay those of the file
   /// The polygon of the file each face comes from: `faces` entries, one per
   /// face of the mesh in the order of `faces(mesh)`. The triangles cut from a
   /// polygon all map to it, so per-polygon data of the file (labels, colours)
   /// can be carried to the triangles.
   std::vector<std::size_t> file_face;
+  /// What was repaired (`Mesh_read_options::repair`); all zero when nothing was.
+  Mesh_repair_report repair;
+  /// Empty unless the repair stitched borders: for each point of the file,
+  /// the vertex its faces use (itself, or the coinciding point it was merged
+  /// into; the merged point stays as an isolated vertex).
+  std::vector<std::size_t> vertex_of_point;
+  /// Empty unless the repair split non-manifold points: for each vertex of
+  /// the mesh, the point of the file it is (vertices past the file's points
+  /// are copies).
+  std::vector<std::size_t> point_of_vertex;
+
+  /// The vertex of the mesh that stands for point `i` of the file.
+  std::size_t vertex_of(std::size_t i) const { return i < vertex_of_point.size() ? vertex_of_point[i] : i; }
+  /// The point of the file that vertex `v` of the mesh is (or copies).
+  std::size_t point_of(std::size_t v) const { return v < point_of_vertex.size() ? point_of_vertex[v] : v; }
+};
+
+/// How `read_triangle_mesh()` treats a file that is not a manifold,
+/// consistently oriented mesh.
+struct Mesh_read_options {
+  /// Repair what can be repaired without moving a point (see
+  /// `read_triangle_mesh()`); false refuses such a file, naming the problem.
+  bool repair = true;
 };
 
 /// The formats of mesh files that `read_triangle_mesh()` reads.
@@ -107,9 +131,22 @@ inline const char* format_name(Mesh_format format)
 /// The file is read as a polygon soup (OFF, OBJ and PLY by diffuv's readers,
 /// which give what CGAL's readers give; STL by CGAL's) and checked
 /// before the mesh is built: at least one face; finite coordinates; faces of
-/// at least three vertex indices, in range and distinct; a manifold,
-/// consistently oriented polygon mesh. Nothing is repaired, merged or
-/// reoriented, so that indices stay those of the file.
+/// at least three vertex indices, in range.
+///
+/// Then, with `options.repair` (the default), what would keep the soup from
+/// being a manifold, consistently oriented mesh is repaired without moving a
+/// point or renumbering the file's points, each repair counted in
+/// `report.repair`: border edges that coincide in pairs are stitched (the
+/// unwelded seam; their points merged into the one of smallest index, the
+/// other left as an isolated vertex: `vertex_of_point`); faces that use a
+/// point twice, and faces that repeat another's points, are dropped; faces
+/// are oriented consistently per component (most of its faces keep their
+/// orientation); non-manifold points (vertices where faces meet in several
+/// fans, ends of edges of three or more faces) get a copy per extra fan,
+/// appended after the file's points (`point_of_vertex`). A surface that
+/// cannot be oriented (a Moebius strip) is refused. Without `options.repair`
+/// the soup must be all that already (faces of distinct vertex indices, a
+/// manifold, consistently oriented polygon mesh), else it is refused.
 ///
 /// Then:
 /// - points used by no face become isolated vertices (counted in the report;
@@ -145,14 +182,19 @@ inline const char* format_name(Mesh_format format)
 ///   - "vertex I has a coordinate of X, too large to compute with (beyond 1e60): rescale the mesh",
 ///     "the mesh is too small to compute with (it spans X, under 1e-60): rescale the mesh"
 ///   - "face J has vertex index X, out of range (the file has N vertices)"
-///   - "face J has only K vertices", "face J uses vertex I twice"
-///   - "non-manifold edge or vertex, or inconsistent orientation (...)", with
-///     "; vertices I and K have the same position: the mesh may need welding"
-///     when two used points coincide
+///   - "face J has only K vertices"
+///   - with `options.repair`: "the surface is not orientable (like a Moebius
+///     strip): faces J and K meet at the edge between vertices I and L ...",
+///     "non-manifold edge or vertex left after repair (...)", "the file has
+///     no face that uses three distinct points"
+///   - without: "face J uses vertex I twice", "non-manifold edge or vertex, or
+///     inconsistent orientation (...)", with "; vertices I and K have the
+///     same position: the mesh may need welding" when two used points coincide
 ///   - "face J cannot be triangulated without a second edge between vertices I and K"
 ///   - "the polygons of the file cannot be cut into triangles"
 template <class TriangleMesh>
-Mesh_read_report read_triangle_mesh(const std::string& path, TriangleMesh& mesh)
+Mesh_read_report read_triangle_mesh(const std::string& path, TriangleMesh& mesh,
+                                    const Mesh_read_options& options = Mesh_read_options())
 {
   namespace PMP = CGAL::Polygon_mesh_processing;
   namespace fs = std::filesystem;
@@ -225,14 +267,25 @@ Mesh_read_report read_triangle_mesh(const std::string& path, TriangleMesh& mesh)
 
   // CGAL's OBJ reader lets the index one past the last vertex through; the
   // OBJ scan quotes the index as written.
-  const std::vector<bool> used =
-    internal::check_polygon_soup(path, points, polygons, locate, format == Mesh_format::obj);
+  std::vector<bool> used =
+    internal::check_polygon_soup(path, points, polygons, locate, format == Mesh_format::obj, options.repair);
 
   Mesh_read_report report;
   report.vertices = points.size();
   report.faces_in_file = polygons.size();
+  internal::Soup_repair_map repaired;
+  if(options.repair) {
+    repaired = internal::repair_polygon_soup(path, points, polygons, locate, report.repair);
+    if(report.repair.points_merged > 0) report.vertex_of_point = std::move(repaired.vertex_of_point);
+    if(report.repair.vertex_copies > 0) report.point_of_vertex = std::move(repaired.point_of_vertex);
+    if(report.repair.any()) {
+      used.assign(points.size(), false);
+      for(const auto& polygon : polygons)
+        for(std::size_t v : polygon) used[v] = true;
+    }
+  }
   report.isolated_vertices = static_cast<std::size_t>(std::count(used.begin(), used.end(), false));
-  report.file_face = internal::triangulate_polygons(path, points, polygons, locate, mesh);
+  report.file_face = internal::triangulate_polygons(path, points, polygons, locate, mesh, repaired.file_polygon);
   report.polygons_triangulated = static_cast<std::size_t>(
       std::count_if(polygons.begin(), polygons.end(), [](const auto& polygon) { return polygon.size() > 3; }));
   report.faces = static_cast<std::size_t>(num_faces(mesh));

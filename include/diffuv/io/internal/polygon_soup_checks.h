@@ -106,9 +106,13 @@ inline std::string describe_non_manifold(const std::vector<std::vector<std::size
 /// Around a vertex v each face (.., b, v, a, ..) gives the link a -> b. An
 /// oriented edge v -> a used twice is a repeated link start at v; otherwise
 /// the links form paths and cycles, one per fan.
+/// With `on_border`, a yes also says which points are on the border (their
+/// fan is a path); the answer no leaves it unspecified.
 template <class Index>
-bool is_manifold_oriented_soup_as(const std::vector<std::vector<std::size_t>>& polygons, std::size_t nb_points)
+bool is_manifold_oriented_soup_as(const std::vector<std::vector<std::size_t>>& polygons, std::size_t nb_points,
+                                  std::vector<char>* on_border = nullptr)
 {
+  if(on_border) on_border->assign(nb_points, 0);
   // The links of each vertex, stored vertex by vertex (counting sort), with
   // indices as small as the mesh allows: the pages of fresh memory are what
   // this costs on a large mesh.
@@ -130,7 +134,10 @@ bool is_manifold_oriented_soup_as(const std::vector<std::vector<std::size_t>>& p
     const auto begin = links.begin() + static_cast<std::ptrdiff_t>(first[v]);
     const auto end = links.begin() + static_cast<std::ptrdiff_t>(first[v + 1]);
     const std::size_t degree = first[v + 1] - first[v];
-    if(degree < 2) continue;
+    if(degree < 2) {
+      if(on_border && degree == 1) (*on_border)[v] = 1;
+      continue;
+    }
     std::sort(begin, end);
     for(auto it = begin + 1; it != end; ++it)
       if(it->first == (it - 1)->first) return false; // an oriented edge used twice
@@ -154,15 +161,17 @@ bool is_manifold_oriented_soup_as(const std::vector<std::vector<std::size_t>>& p
       if(paths == 0 && at == start) { ++walked; break; } // the cycle closed
     }
     if(walked != degree) return false;
+    if(on_border && paths == 1) (*on_border)[v] = 1;
   }
   return true;
 }
 
-inline bool is_manifold_oriented_soup(const std::vector<std::vector<std::size_t>>& polygons, std::size_t nb_points)
+inline bool is_manifold_oriented_soup(const std::vector<std::vector<std::size_t>>& polygons, std::size_t nb_points,
+                                      std::vector<char>* on_border = nullptr)
 {
   if(nb_points < (std::size_t(1) << 32))
-    return is_manifold_oriented_soup_as<std::uint32_t>(polygons, nb_points);
-  return is_manifold_oriented_soup_as<std::size_t>(polygons, nb_points);
+    return is_manifold_oriented_soup_as<std::uint32_t>(polygons, nb_points, on_border);
+  return is_manifold_oriented_soup_as<std::size_t>(polygons, nb_points, on_border);
 }
 
 /// Checks the soup of `path`, in file order so that the first problem is
@@ -171,13 +180,15 @@ inline bool is_manifold_oriented_soup(const std::vector<std::vector<std::size_t>
 /// with; a manifold, consistently oriented polygon mesh. `locate` gives the
 /// lines. With `scan_quotes_indices` (OBJ, whose indices count from 1 or
 /// back from the end), an index out of range is reported as the scan quotes
-/// it, as written in the file.
+/// it, as written in the file. With `repair_follows`, a face that uses a
+/// point twice and a soup that is not a manifold oriented mesh are left to
+/// `repair_polygon_soup()`.
 /// \returns whether each point is used by a face
 /// \throws Input_error naming `path` (see `read_triangle_mesh()`)
 template <class Point>
 std::vector<bool> check_polygon_soup(const std::string& path, const std::vector<Point>& points,
                                      const std::vector<std::vector<std::size_t>>& polygons, Line_locator& locate,
-                                     bool scan_quotes_indices)
+                                     bool scan_quotes_indices, bool repair_follows = false)
 {
   using Polygon = std::vector<std::size_t>;
   if(polygons.empty())
@@ -208,7 +219,7 @@ std::vector<bool> check_polygon_soup(const std::string& path, const std::vector<
     // smallest repeated index is the one named).
     const bool triangle_repeats =
         polygon.size() == 3 && (polygon[0] == polygon[1] || polygon[1] == polygon[2] || polygon[0] == polygon[2]);
-    if(polygon.size() > 3 || triangle_repeats) {
+    if(!repair_follows && (polygon.size() > 3 || triangle_repeats)) {
       Polygon sorted = polygon;
       std::sort(sorted.begin(), sorted.end());
       const auto twice = std::adjacent_find(sorted.begin(), sorted.end());
@@ -247,7 +258,7 @@ std::vector<bool> check_polygon_soup(const std::string& path, const std::vector<
       throw Input_error(path, 0, what.str());
     }
   }
-  if(!is_manifold_oriented_soup(polygons, points.size())) {
+  if(!repair_follows && !is_manifold_oriented_soup(polygons, points.size())) {
     std::size_t face = 0;
     const std::string detail = describe_non_manifold(polygons, points.size(), face);
     // Unwelded copies of a point (common in STL exports and scans) are the

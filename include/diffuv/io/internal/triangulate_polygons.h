@@ -85,15 +85,19 @@ bool polygon_corners_coincide_in_projection(typename boost::graph_traits<Triangl
 /// corner when that fails on a degenerate polygon (and for every polygon if
 /// CGAL's triangulation leaves a corrupt mesh). No vertex is added: vertex i
 /// is point i. `locate` gives the lines of messages.
-/// \returns the polygon of each face, in the order of `faces(mesh)`
+/// `file_polygon`, if not empty, gives the file's number of each polygon
+/// (some were dropped by the repair): messages and the result use it.
+/// \returns the polygon of the file of each face, in the order of `faces(mesh)`
 /// \throws Input_error naming `path`: "the polygons of the file cannot be cut
 ///   into triangles", "face J cannot be triangulated without a second edge
 ///   between vertices I and K", "vertex I is non-manifold"
 template <class TriangleMesh, class Point>
 std::vector<std::size_t> triangulate_polygons(const std::string& path, const std::vector<Point>& points,
                                               const std::vector<std::vector<std::size_t>>& polygons,
-                                              Line_locator& locate, TriangleMesh& mesh)
+                                              Line_locator& locate, TriangleMesh& mesh,
+                                              const std::vector<std::size_t>& file_polygon = {})
 {
+  const auto in_file = [&](std::size_t j) { return file_polygon.empty() ? j : file_polygon[j]; };
   namespace PMP = CGAL::Polygon_mesh_processing;
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
   using halfedge_descriptor = typename boost::graph_traits<TriangleMesh>::halfedge_descriptor;
@@ -185,8 +189,8 @@ std::vector<std::size_t> triangulate_polygons(const std::string& path, const std
     }
   }
   if(blamed != std::size_t(-1))
-    throw Input_error(path, locate.face_line(blamed),
-                      "face " + std::to_string(blamed) + " cannot be triangulated without a second edge between vertices " +
+    throw Input_error(path, locate.face_line(in_file(blamed)),
+                      "face " + std::to_string(in_file(blamed)) + " cannot be triangulated without a second edge between vertices " +
                           std::to_string(a) + " and " + std::to_string(b));
 
   // check_polygon_soup() makes this impossible; it stays as a cheap guard
@@ -203,7 +207,7 @@ std::vector<std::size_t> triangulate_polygons(const std::string& path, const std
   std::vector<std::size_t> file_face;
   file_face.reserve(static_cast<std::size_t>(num_faces(mesh)));
   for(face_descriptor f : faces(mesh))
-    file_face.push_back(get(polygon_of, f));
+    file_face.push_back(in_file(get(polygon_of, f)));
   return file_face;
 }
 
