@@ -178,7 +178,7 @@ TEST_F(Tool, VertexColoursAreRegionsOnlyWhenTheyLookPainted)
   ASSERT_EQ(scanned.code, 0) << scanned.err;
   EXPECT_EQ(scanned.out.find("painted"), std::string::npos) << scanned.out;
   EXPECT_EQ(scanned.err.rfind("diffuv: warning: " + scan + ": " + std::to_string(cow.points.size()) +
-                                  " distinct vertex colours in ", 0), 0u) << scanned.err;
+                                  " distinct vertex colours, taken by the faces as ", 0), 0u) << scanned.err;
   EXPECT_NE(scanned.err.find("areas: not taken as regions (--regions-from colors takes them)\n"), std::string::npos)
       << scanned.err;
   // The same patches as the mesh without colours.

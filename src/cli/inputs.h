@@ -186,11 +186,16 @@ inline Input_mesh read_input(const std::string& path, const Patch_cli_options& o
     diffuv::Painted_labels painted = diffuv::read_painted_labels(path, std::string(), o.regions_from != "labels");
     if(painted.source == diffuv::Label_source::vertex_colors && o.regions_from == "auto") {
       // A coloured scan or a transferred field is data, not regions.
-      const diffuv::Paint_look look = diffuv::look_of_paint(
-          in.mesh, diffuv::face_labels_of_mesh(painted.polygon_labels, in.report), painted.colors.size());
+      // Faces take the colour most of their vertices have: count the colours they take.
+      const std::vector<int> face_colors = diffuv::face_labels_of_mesh(painted.polygon_labels, in.report);
+      std::vector<int> taken = face_colors;
+      std::sort(taken.begin(), taken.end());
+      const std::size_t colors_on_faces = static_cast<std::size_t>(std::unique(taken.begin(), taken.end()) - taken.begin());
+      const diffuv::Paint_look look = diffuv::look_of_paint(in.mesh, face_colors, colors_on_faces);
       if(!look.painted) {
         std::cerr << "diffuv: warning: " << path << ": "
-                  << count_text(look.colors, "distinct vertex colour", "distinct vertex colours") << " in "
+                  << count_text(painted.colors.size(), "distinct vertex colour", "distinct vertex colours")
+                  << ", taken by the faces as " << count_text(look.colors, "colour") << " in "
                   << count_text(look.areas, "area") << ": not taken as regions (--regions-from colors takes them)\n";
         painted = diffuv::Painted_labels();
       }
