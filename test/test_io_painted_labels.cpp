@@ -436,7 +436,7 @@ TEST(PaintLook, PaintingAndScansAreToldApart)
     const double y = cow.point(target(halfedge(f, cow), cow)).y();
     bands[f.idx()] = std::min(3, static_cast<int>(4 * (y - low) / (high - low)));
   }
-  const diffuv::Paint_look painted = diffuv::look_of_paint(cow, bands, 4);
+  const diffuv::Paint_look painted = diffuv::look_of_paint(cow, bands);
   EXPECT_TRUE(painted.painted);
   EXPECT_EQ(painted.colors, 4u);
   EXPECT_GE(painted.areas, 4u); // legs and horns make a band several areas
@@ -444,18 +444,20 @@ TEST(PaintLook, PaintingAndScansAreToldApart)
 
   std::vector<int> own(num_faces(cow));
   for(std::size_t f = 0; f < own.size(); ++f) own[f] = static_cast<int>(f);
-  const diffuv::Paint_look every_face = diffuv::look_of_paint(cow, own, own.size());
+  const diffuv::Paint_look every_face = diffuv::look_of_paint(cow, own);
   EXPECT_FALSE(every_face.painted);
+  EXPECT_EQ(every_face.colors, num_faces(cow));
   EXPECT_EQ(every_face.areas, num_faces(cow));
 
   std::vector<int> scattered(num_faces(cow));
   for(std::size_t f = 0; f < scattered.size(); ++f) scattered[f] = static_cast<int>(f * 7919 % 13);
-  const diffuv::Paint_look speckled = diffuv::look_of_paint(cow, scattered, 13);
+  const diffuv::Paint_look speckled = diffuv::look_of_paint(cow, scattered);
   EXPECT_FALSE(speckled.painted);
+  EXPECT_EQ(speckled.colors, 13u);
   EXPECT_GT(speckled.areas, 2u * 13u + 16u);
 
   // One colour: one area, painted.
-  EXPECT_TRUE(diffuv::look_of_paint(cow, std::vector<int>(num_faces(cow), 0), 1).painted);
+  EXPECT_TRUE(diffuv::look_of_paint(cow, std::vector<int>(num_faces(cow), 0)).painted);
 }
 
 } // namespace

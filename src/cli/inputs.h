@@ -186,12 +186,9 @@ inline Input_mesh read_input(const std::string& path, const Patch_cli_options& o
     diffuv::Painted_labels painted = diffuv::read_painted_labels(path, std::string(), o.regions_from != "labels");
     if(painted.source == diffuv::Label_source::vertex_colors && o.regions_from == "auto") {
       // A coloured scan or a transferred field is data, not regions.
-      // Faces take the colour most of their vertices have: count the colours they take.
-      const std::vector<int> face_colors = diffuv::face_labels_of_mesh(painted.polygon_labels, in.report);
-      std::vector<int> taken = face_colors;
-      std::sort(taken.begin(), taken.end());
-      const std::size_t colors_on_faces = static_cast<std::size_t>(std::unique(taken.begin(), taken.end()) - taken.begin());
-      const diffuv::Paint_look look = diffuv::look_of_paint(in.mesh, face_colors, colors_on_faces);
+      // Faces take the colour most of their vertices have: the look counts the colours they take.
+      const diffuv::Paint_look look =
+          diffuv::look_of_paint(in.mesh, diffuv::face_labels_of_mesh(painted.polygon_labels, in.report));
       if(!look.painted) {
         std::cerr << "diffuv: warning: " << path << ": "
                   << count_text(painted.colors.size(), "distinct vertex colour", "distinct vertex colours")

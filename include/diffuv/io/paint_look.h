@@ -8,6 +8,7 @@
 
 #include <boost/graph/graph_traits.hpp>
 
+#include <algorithm>
 #include <cstddef>
 #include <numeric>
 #include <vector>
@@ -29,12 +30,14 @@ struct Paint_look {
 /// colours are scattered over thousands of specks).
 ///
 /// \tparam TriangleMesh a `FaceListGraph` with an internal face index
-/// \param face_labels one label per face (by face index), `colors` distinct values
+/// \param face_labels one label per face (by face index): a colour's number
 template <class TriangleMesh>
-Paint_look look_of_paint(const TriangleMesh& tm, const std::vector<int>& face_labels, std::size_t colors)
+Paint_look look_of_paint(const TriangleMesh& tm, const std::vector<int>& face_labels)
 {
   Paint_look look;
-  look.colors = colors;
+  std::vector<int> distinct = face_labels;
+  std::sort(distinct.begin(), distinct.end());
+  look.colors = static_cast<std::size_t>(std::unique(distinct.begin(), distinct.end()) - distinct.begin());
   auto findex = get(boost::face_index, tm);
   std::vector<std::size_t> parent(num_faces(tm));
   std::iota(parent.begin(), parent.end(), std::size_t(0));
@@ -52,7 +55,7 @@ Paint_look look_of_paint(const TriangleMesh& tm, const std::vector<int>& face_la
       if(a != b) parent[a] = b;
     }
   for(std::size_t i = 0; i < parent.size(); ++i) look.areas += root(i) == i ? 1 : 0;
-  look.painted = colors <= Paint_look::max_colors && look.areas <= 2 * colors + 16;
+  look.painted = look.colors <= Paint_look::max_colors && look.areas <= 2 * look.colors + 16;
   return look;
 }
 

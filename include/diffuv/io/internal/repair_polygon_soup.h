@@ -77,6 +77,13 @@ struct Orientation_record : CGAL::Polygon_mesh_processing::Default_orientation_v
   void duplicated_vertex(std::size_t point, std::size_t copy) { copies->emplace_back(point, copy); }
 };
 
+/// A point's coordinates as a key: points that coincide exactly compare equal.
+template <class Point>
+std::tuple<double, double, double> position_key(const std::vector<Point>& points, std::size_t i)
+{
+  return std::make_tuple(CGAL::to_double(points[i].x()), CGAL::to_double(points[i].y()), CGAL::to_double(points[i].z()));
+}
+
 /// True when the soup needs none of the repairs: a manifold, consistently
 /// oriented polygon mesh, no face using a point twice, no two border points
 /// at one position (the first thing stitching would look at).
@@ -97,10 +104,7 @@ bool soup_needs_no_repair(const std::vector<Point>& points, const std::vector<st
   std::vector<std::size_t> border;
   for(std::size_t i = 0; i < on_border.size(); ++i)
     if(on_border[i]) border.push_back(i);
-  const auto position = [&](std::size_t i) {
-    return std::make_tuple(CGAL::to_double(points[i].x()), CGAL::to_double(points[i].y()),
-                           CGAL::to_double(points[i].z()));
-  };
+  const auto position = [&](std::size_t i) { return position_key(points, i); };
   std::sort(border.begin(), border.end(), [&](std::size_t a, std::size_t b) { return position(a) < position(b); });
   for(std::size_t k = 1; k < border.size(); ++k)
     if(position(border[k - 1]) == position(border[k])) return false;
@@ -126,10 +130,7 @@ Soup_repair_map repair_polygon_soup(const std::string& path, std::vector<Point>&
   if(soup_needs_no_repair(points, polygons)) return map;
 
   const std::size_t file_points = points.size();
-  const auto position = [&](std::size_t i) {
-    return std::make_tuple(CGAL::to_double(points[i].x()), CGAL::to_double(points[i].y()),
-                           CGAL::to_double(points[i].z()));
-  };
+  const auto position = [&](std::size_t i) { return position_key(points, i); };
 
   // ---- stitching: border edges (edges of one face) that coincide in pairs
   // have their points merged, each into the one of smallest index. Points
