@@ -116,7 +116,7 @@ for mesh in "${meshes[@]}"; do
       patches=$(grep -m1 -o -E '^[0-9]+ patch(es)?' "$log.stdout" || true)
       [ -n "$patches" ] || patches=$(sed -n 2p "$log.stdout" | cut -c1-60)
       # What reading repaired (issue #21), after the patches.
-      repaired=$(grep -m1 '^repaired: ' "$log.stdout" | sed 's/ (--strict-input refuses such a file)//' || true)
+      repaired=$(grep -m1 '^repaired: ' "$log.stdout" | sed 's/ (--strict-input turns repairs off)//' || true)
       [ -z "$repaired" ] || patches+="; $repaired"
       if [ -n "$warning" ]; then
         outcome=partial detail="$patches; warning: $warning"

@@ -223,6 +223,13 @@ const std::vector<Catalogue_entry>& catalogue()
        m + " --strict-input", 1,
        "diffuv: error: {d}/m.off: non-manifold edge or vertex, or inconsistent orientation (the faces around vertex 1 "
        "form 2 separate fans); vertices 4 and 9 have the same position: the mesh may need welding\n"},
+      {"unwelded_seam_strict", // the right column of cells uses copies 9, 10, 11 of the middle points 1, 4, 7
+       {{"m.off", "OFF\n12 8 0\n" + grid_points + "1 0 0\n1 1 0\n1 2 0\n3 0 1 4\n3 0 4 3\n3 9 2 5\n3 9 5 10\n"
+                  "3 3 4 7\n3 3 7 6\n3 10 5 8\n3 10 8 11\n"}},
+       m + " --strict-input", 0,
+       "diffuv: warning: {d}/m.off: 3 border points lie where another border point lies: the mesh may need welding "
+       "(reading stitches such borders unless --strict-input)\n",
+       "12 vertices, 8 faces\n"},
       {"non_manifold_edge_strict", {{"m.off", "OFF\n10 10 0\n" + grid_points + "1 -1 1\n" + grid_faces + "3 1 0 9\n3 0 1 9\n"}},
        m + " --strict-input", 1,
        "diffuv: error: {d}/m.off:22: non-manifold edge or vertex, or inconsistent orientation (faces 0 and 9 both go "
@@ -235,17 +242,23 @@ const std::vector<Catalogue_entry>& catalogue()
       // The same files repaired (the default): a result, the repair on the summary's second line.
       {"duplicate_vertices_not_welded",
        {{"m.off", "OFF\n10 8 0\n" + grid_points + "1 1 0\n3 0 1 4\n3 0 4 3\n3 1 2 5\n3 1 5 9\n3 3 4 7\n3 3 7 6\n3 9 5 8\n3 9 8 7\n"}},
-       m, 0, "", "10 vertices, 8 faces, 1 isolated vertex (in no face: no (u,v))\nrepaired: 1 coinciding point merged (borders stitched) (--strict-input refuses such a file)\n"},
+       m, 0, "", "10 vertices, 8 faces, 1 isolated vertex (in no face: no (u,v))\nrepaired: 1 coinciding point merged (borders stitched) (--strict-input turns repairs off)\n"},
+      {"unwelded_seam",
+       {{"m.off", "OFF\n12 8 0\n" + grid_points + "1 0 0\n1 1 0\n1 2 0\n3 0 1 4\n3 0 4 3\n3 9 2 5\n3 9 5 10\n"
+                  "3 3 4 7\n3 3 7 6\n3 10 5 8\n3 10 8 11\n"}},
+       m, 0, "",
+       "12 vertices, 8 faces, 3 isolated vertices (in no face: no (u,v))\nrepaired: 3 coinciding points merged (borders "
+       "stitched) (--strict-input turns repairs off)\n"},
       {"non_manifold_edge", {{"m.off", "OFF\n10 10 0\n" + grid_points + "1 -1 1\n" + grid_faces + "3 1 0 9\n3 0 1 9\n"}}, m, 0,
-       "", "\nrepaired: 1 duplicate face dropped (--strict-input refuses such a file)\n"},
+       "", "\nrepaired: 1 duplicate face dropped (--strict-input turns repairs off)\n"},
       {"non_manifold_edge_of_three_faces",
        {{"m.off", "OFF\n11 10 0\n" + grid_points + "1 -1 1\n1 -1 -1\n" + grid_faces + "3 1 0 9\n3 0 1 10\n"}}, m, 0,
        "diffuv: warning: 2 of 3 patches cannot be parameterized (see the table); their faces have no (u,v)\n",
        "11 vertices, 10 faces\nrepaired: 1 non-manifold edge cut, 2 non-manifold vertices split (4 copies added) "
-       "(--strict-input refuses such a file)\n3 patches"},
+       "(--strict-input turns repairs off)\n3 patches"},
       {"non_manifold_vertex",
        {{"m.off", "OFF\n12 10 0\n" + grid_points + "3 3 0\n2 3 0\n3 2 0\n" + grid_faces + "3 8 11 9\n3 8 9 10\n"}}, m, 0, "",
-       "12 vertices, 10 faces\nrepaired: 1 non-manifold vertex split (1 copy added) (--strict-input refuses such a file)\n"},
+       "12 vertices, 10 faces\nrepaired: 1 non-manifold vertex split (1 copy added) (--strict-input turns repairs off)\n"},
       {"moebius_strip", // three quads, the last joined to the first with a half twist
        {{"m.off", "OFF\n6 6 0\n1.5 0 0\n2.5 0 0\n-0.875 1.516 -0.433\n-1.125 1.949 0.433\n-1.125 -1.949 -0.433\n"
                   "-0.875 -1.516 0.433\n3 0 1 3\n3 0 3 2\n3 2 3 5\n3 2 5 4\n3 4 5 0\n3 4 0 1\n"}}, m, 1,

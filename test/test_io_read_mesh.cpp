@@ -11,6 +11,7 @@
 
 #include <diffuv/io/read_labels.h>
 #include <diffuv/io/read_mesh.h>
+#include <diffuv/parameterization/parameterize_disc.h>
 
 #include <CGAL/IO/OBJ.h>
 #include <CGAL/IO/OFF.h>
@@ -1732,6 +1733,86 @@ TEST_F(IoReadMesh, UnweldedFacesAreStitched)
   std::vector<std::size_t> apart_component(num_faces(apart));
   EXPECT_EQ(CGAL::Polygon_mesh_processing::connected_components(
                 apart, CGAL::make_property_map(apart_component)), cow.faces.size());
+}
+
+// A disc written without shared points is stitched back into a disc whose
+// merged points are vertices on no face: parameterize_disc() maps it with
+// the corners read through the merges, as it maps the same grid welded
+// (every vertex at the same (u,v) as the welded grid's vertex at its place).
+TEST_F(IoReadMesh, AStitchedDiscTakesCorners)
+{
+  const int n = 7; // n x n points, a gently curved grid
+  const auto point = [&](int i, int j) {
+    return std::array<double, 3>{double(i), double(j), 0.05 * (i - 3) * (j - 2)};
+  };
+  std::ostringstream welded, unwelded;
+  welded << std::setprecision(17) << "OFF\n" << n * n << ' ' << 2 * (n - 1) * (n - 1) << " 0\n";
+  unwelded << std::setprecision(17) << "OFF\n" << 6 * (n - 1) * (n - 1) << ' ' << 2 * (n - 1) * (n - 1) << " 0\n";
+  for(int j = 0; j < n; ++j)
+    for(int i = 0; i < n; ++i) {
+      const auto p = point(i, j);
+      welded << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
+    }
+  std::vector<std::array<int, 3>> triangles;
+  for(int j = 0; j + 1 < n; ++j)
+    for(int i = 0; i + 1 < n; ++i) {
+      const int a = j * n + i, b = a + 1, c = a + n + 1, d = a + n;
+      triangles.push_back({a, b, c});
+      triangles.push_back({a, c, d});
+    }
+  std::map<int, std::size_t> unwelded_point_of; // a grid point -> its first copy in the unwelded file
+  for(std::size_t t = 0; t < triangles.size(); ++t)
+    for(int k = 0; k < 3; ++k) {
+      const int g = triangles[t][k];
+      unwelded_point_of.emplace(g, 3 * t + k);
+      const auto p = point(g % n, g / n);
+      unwelded << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
+    }
+  for(const auto& t : triangles) welded << "3 " << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
+  for(std::size_t t = 0; t < triangles.size(); ++t)
+    unwelded << "3 " << 3 * t << ' ' << 3 * t + 1 << ' ' << 3 * t + 2 << '\n';
+
+  diffuv::Mesh_read_report welded_report, report;
+  const Mesh grid = read_repaired(write("welded.off", welded.str()), welded_report);
+  const Mesh stitched = read_repaired(write("unwelded.off", unwelded.str()), report);
+  ASSERT_FALSE(welded_report.repair.any());
+  ASSERT_EQ(report.repair.points_merged, 6 * (n - 1) * (n - 1) - n * n);
+  EXPECT_FALSE(diffuv::check_disc(stitched));                 // vertices on no face: not a disc as such
+  EXPECT_TRUE(diffuv::check_disc(stitched, true)) << diffuv::check_disc(stitched, true).what();
+
+  const std::array<int, 4> grid_corners = {0, n - 1, n * n - 1, n * (n - 1)};
+  std::vector<vertex_descriptor> welded_corners, stitched_corners;
+  for(int g : grid_corners) {
+    welded_corners.emplace_back(static_cast<Mesh::size_type>(g));
+    stitched_corners.emplace_back(static_cast<Mesh::size_type>(report.vertex_of(unwelded_point_of.at(g))));
+  }
+  diffuv::Uv_atlas<Mesh> welded_atlas(grid), atlas(stitched);
+  diffuv::Disc_parameterization_report<Mesh> welded_sides, sides;
+  ASSERT_TRUE(diffuv::parameterize_disc(grid, grid.points(), welded_corners, welded_atlas, {}, &welded_sides));
+  const diffuv::Status status = diffuv::parameterize_disc(stitched, stitched.points(), stitched_corners, atlas, {}, &sides);
+  ASSERT_TRUE(status) << status.what();
+  ASSERT_EQ(atlas.number_of_charts(), 1u);
+  EXPECT_EQ(atlas.chart(0).vertices.size(), std::size_t(n * n));
+  EXPECT_EQ(atlas.chart(0).faces.size(), triangles.size());
+  EXPECT_EQ(sides.sides.corners[0], stitched_corners[0]);
+  EXPECT_EQ(sides.sides.u1.size(), welded_sides.sides.u1.size());
+  EXPECT_EQ(sides.sides.v2.size(), welded_sides.sides.v2.size());
+  for(int g = 0; g < n * n; ++g) {
+    const vertex_descriptor w(static_cast<Mesh::size_type>(g));
+    const vertex_descriptor s(static_cast<Mesh::size_type>(report.vertex_of(unwelded_point_of.at(g))));
+    ASSERT_EQ(stitched.point(s), grid.point(w));
+    const auto expected = get(welded_atlas.chart_uv_map(0), w), got = get(atlas.chart_uv_map(0), s);
+    EXPECT_NEAR(got.x(), expected.x(), 1e-12) << "grid point " << g;
+    EXPECT_NEAR(got.y(), expected.y(), 1e-12) << "grid point " << g;
+  }
+  // A corner on no face (a merged point) is refused, naming it.
+  std::vector<vertex_descriptor> merged_corner = stitched_corners;
+  merged_corner[1] = vertex_descriptor(static_cast<Mesh::size_type>(3 * (n - 1) * (n - 1) * 2 - 1));
+  ASSERT_EQ(stitched.halfedge(merged_corner[1]), Mesh::null_halfedge());
+  diffuv::Uv_atlas<Mesh> refused(stitched);
+  const diffuv::Status no_face = diffuv::parameterize_disc(stitched, stitched.points(), merged_corner, refused);
+  EXPECT_EQ(no_face.code, diffuv::Status_code::corner_not_on_border) << no_face.what();
+  EXPECT_EQ(refused.number_of_charts(), 0u);
 }
 
 // STL has no shared points: CGAL's reader merges identical ones, so a closed

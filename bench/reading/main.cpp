@@ -10,9 +10,18 @@
 // CGAL::IO::read_polygon_soup() alone (file to points and polygons, no
 // checks, no mesh). Times are medians of --runs reads after one untimed read.
 //
-// Usage: diffuv_reading_bench [--runs 5] [--meshes mushroom3,grid1m] [-o DIR]
-// Prints a table with MB/s and each target (>= 100 MB/s ASCII, >= 500 MB/s
-// binary PLY) next to its measurement; writes DIR/reading.md.
+// A second table measures the repairs of reading (issue #21: "repair costs
+// less than reading"): each mesh of --repair-meshes written as OFF as it is,
+// with every other face turned over, and as a triangle soup (three points
+// of its own per face, the unwelded STL case). For each file: the whole
+// read_triangle_mesh(), and the repair alone (internal::repair_polygon_soup()
+// on the parsed soup), whose target is to cost less than the rest of the read.
+//
+// Usage: diffuv_reading_bench [--runs 5] [--meshes mushroom3,grid1m]
+//                             [--repair-meshes bunny00] [-o DIR]
+// Prints the tables with MB/s and each target (>= 100 MB/s ASCII, >= 500 MB/s
+// binary PLY; repair < rest of the read) next to its measurement; writes
+// DIR/reading.md.
 #include "common.h"
 
 #include <diffuv/io/read_mesh.h>
@@ -27,6 +36,8 @@
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
+#include <array>
+#include <iomanip>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -121,6 +132,83 @@ std::vector<File> write_files(const Mesh& m, const std::string& name, const fs::
   return files;
 }
 
+// `m` written as OFF three ways: as it is, with every other face turned
+// over, and with three points of its own per face.
+std::vector<File> write_damaged_files(const Mesh& m, const std::string& name, const fs::path& folder)
+{
+  std::vector<Point_3> points(m.points().begin(), m.points().end());
+  std::vector<std::array<std::size_t, 3>> triangles;
+  for(Mesh::Face_index f : m.faces()) {
+    std::array<std::size_t, 3> t{};
+    std::size_t c = 0;
+    for(Mesh::Vertex_index v : m.vertices_around_face(m.halfedge(f))) t[c++] = v;
+    triangles.push_back(t);
+  }
+  const auto write = [&](const std::string& kind, bool turn, bool soup) {
+    const std::string path = (folder / (name + "-" + kind + ".off")).string();
+    std::ofstream out(path);
+    out << std::setprecision(17) << "OFF\n" << (soup ? 3 * triangles.size() : points.size()) << ' '
+        << triangles.size() << " 0\n";
+    if(soup) {
+      for(const auto& t : triangles)
+        for(std::size_t v : t) out << points[v] << '\n';
+    } else {
+      for(const Point_3& p : points) out << p << '\n';
+    }
+    for(std::size_t j = 0; j < triangles.size(); ++j) {
+      std::array<std::size_t, 3> t = soup ? std::array<std::size_t, 3>{3 * j, 3 * j + 1, 3 * j + 2} : triangles[j];
+      if(turn && j % 2 == 1) std::swap(t[1], t[2]);
+      out << "3 " << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
+    }
+    return File{kind, path};
+  };
+  return {write("as it is", false, false), write("every other face turned", true, false),
+          write("triangle soup", false, true)};
+}
+
+// The repairs' table (see the top of this file); false if a target is missed.
+bool measure_repairs(const std::vector<std::string>& meshes, int runs, const fs::path& scratch, std::ostream& table)
+{
+  table << "\n| mesh | OFF file | MB | read_triangle_mesh ms | repair alone ms | rest of the read ms | what was repaired | repair < rest |\n"
+        << "|---|---|---:|---:|---:|---:|---|---|\n";
+  bool all_met = true;
+  for(const std::string& name : meshes) {
+    Mesh m;
+    read_named_mesh(name, m);
+    for(const File& f : write_damaged_files(m, name, scratch)) {
+      Mesh read;
+      diffuv::Mesh_repair_report repaired;
+      const double ms = median_time(runs, [&] { repaired = diffuv::read_triangle_mesh(f.path, read).repair; });
+      std::vector<Point_3> file_points;
+      std::vector<std::vector<std::size_t>> file_polygons;
+      CGAL::IO::read_polygon_soup(f.path, file_points, file_polygons, CGAL::parameters::verbose(false));
+      std::vector<double> times;
+      for(int r = 0; r < runs; ++r) {
+        std::vector<Point_3> points = file_points;
+        std::vector<std::vector<std::size_t>> polygons = file_polygons;
+        diffuv::internal::Line_locator locate([] { return diffuv::internal::Text_mesh_scan(); });
+        diffuv::Mesh_repair_report report;
+        const auto t0 = Clock::now();
+        diffuv::internal::repair_polygon_soup(f.path, points, polygons, locate, report);
+        times.push_back(ms_since(t0));
+      }
+      const double repair_ms = median(times), rest_ms = ms - repair_ms;
+      std::string what = repaired.faces_reoriented ? std::to_string(repaired.faces_reoriented) + " faces turned"
+                         : repaired.points_merged ? std::to_string(repaired.points_merged) + " points merged"
+                                                  : "nothing";
+      const bool met = !repaired.any() || repair_ms < rest_ms;
+      all_met = all_met && met;
+      table << "| " << name << " | " << f.format << " | "
+            << format("%.1f", static_cast<double>(fs::file_size(f.path)) / 1e6) << " | " << format("%.0f", ms) << " | "
+            << format("%.1f", repair_ms) << " | " << format("%.0f", rest_ms) << " | " << what << " | "
+            << (met ? "yes" : "no") << " |\n";
+      std::cerr << "  " << name << ", " << f.format << ": " << format("%.0f", ms) << " ms, repair "
+                << format("%.1f", repair_ms) << " ms\n";
+    }
+  }
+  return all_met;
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -129,7 +217,12 @@ int main(int argc, char** argv)
   std::vector<std::string> meshes = {"mushroom3", "grid1m"};
   int runs = 5;
   std::string output = "bench-out/reading";
+  std::vector<std::string> repair_meshes = {"bunny00"};
   add_meshes_option(app, meshes, "Meshes (mushroom3: mushroom after 3 Loop steps; grid1m: 1050 x 1050 grid)");
+  app.add_option("--repair-meshes", repair_meshes,
+                 "Meshes written as OFF as they are, with every other face turned, and as a triangle soup, "
+                 "to time the repairs of reading")
+      ->delimiter(',');
   add_runs_option(app, runs, "Reads per file; the median is reported");
   add_output_option(app, output);
   CLI11_PARSE(app, argc, argv);
@@ -166,6 +259,7 @@ int main(int argc, char** argv)
         std::cerr << "  " << f.format << ": " << format("%.0f", ms) << " ms\n";
       }
     }
+    all_met = measure_repairs(repair_meshes, runs, scratch, table) && all_met;
     fs::remove_all(scratch);
     std::cout << table.str();
     std::ofstream(fs::path(output) / "reading.md") << table.str();

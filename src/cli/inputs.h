@@ -177,6 +177,12 @@ inline Input_mesh read_input(const std::string& path, const Patch_cli_options& o
   diffuv::Mesh_read_options reading;
   reading.repair = !o.strict_input;
   in.report = diffuv::read_triangle_mesh(path, in.mesh, reading);
+  if(in.report.coinciding_border_points > 0)
+    std::cerr << "diffuv: warning: " << path << ": "
+              << count_text(in.report.coinciding_border_points, "border point")
+              << (in.report.coinciding_border_points == 1 ? " lies" : " lie")
+              << " where another border point lies: the mesh may need welding (reading stitches such borders "
+                 "unless --strict-input)\n";
   std::vector<int> polygon_labels;
   if(!o.labels.empty()) {
     polygon_labels = diffuv::read_face_labels(o.labels, in.report.faces_in_file);
@@ -245,7 +251,7 @@ inline std::string repair_line(const Input_mesh& in)
   if(parts.empty()) return std::string();
   std::string line = "repaired:";
   for(std::size_t k = 0; k < parts.size(); ++k) line += (k ? ", " : " ") + parts[k];
-  return line + " (--strict-input refuses such a file)";
+  return line + " (--strict-input turns repairs off)";
 }
 
 /// The vertices named by a selection file (corners, sources): indices of the

@@ -65,6 +65,10 @@ struct Mesh_read_report {
   std::vector<std::size_t> file_face;
   /// What was repaired (`Mesh_read_options::repair`); all zero when nothing was.
   Mesh_repair_report repair;
+  /// Without the repair only: border points that lie exactly where another
+  /// border point lies, borders the repair would have stitched (an unwelded
+  /// export read as it is).
+  std::size_t coinciding_border_points = 0;
   /// Empty unless the repair stitched borders: for each point of the file,
   /// the vertex its faces use (itself, or the coinciding point it was merged
   /// into; the merged point stays as an isolated vertex).
@@ -274,7 +278,10 @@ Mesh_read_report read_triangle_mesh(const std::string& path, TriangleMesh& mesh,
   report.vertices = points.size();
   report.faces_in_file = polygons.size();
   internal::Soup_repair_map repaired;
-  if(options.repair) {
+  if(!options.repair) {
+    bool manifold = false;
+    report.coinciding_border_points = internal::coinciding_border_points<std::size_t>(points, polygons, manifold);
+  } else {
     repaired = internal::repair_polygon_soup(path, points, polygons, locate, report.repair);
     if(report.repair.points_merged > 0) report.vertex_of_point = std::move(repaired.vertex_of_point);
     if(report.repair.vertex_copies > 0) report.point_of_vertex = std::move(repaired.point_of_vertex);

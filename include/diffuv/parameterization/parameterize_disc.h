@@ -11,6 +11,7 @@
 #include <diffuv/parameterization/diffusion_coordinates.h>
 #include <diffuv/parameterization/repair_folds.h>
 #include <diffuv/patches/disc_topology.h>
+#include <diffuv/patches/patch_mesh.h>
 #include <diffuv/patches/corners.h>
 
 #include <boost/graph/graph_traits.hpp>
@@ -18,6 +19,7 @@
 #include <algorithm>
 #include <array>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace diffuv {
@@ -36,9 +38,19 @@ struct Disc_parameterization_report {
   Repair_report repair;                                                          ///< what the fold repair did
 };
 
+namespace internal {
+template <class DistanceTag, class HeapTag, class TriangleMesh, class VertexPointMap>
+Status parameterize_disc_without_isolated_vertices(
+    const TriangleMesh& tm, VertexPointMap vpm,
+    const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& corners,
+    Uv_atlas<TriangleMesh>& atlas, const Disc_parameterization_options& options,
+    Disc_parameterization_report<TriangleMesh>* report);
+} // namespace internal
+
 /// Parameterizes the disc mesh `tm` as a single chart of `atlas`.
 ///
-/// The mesh is checked to be a disc (`check_disc()`), its boundary loop is cut
+/// The mesh is checked to be a disc (`check_disc()`; vertices on no face are
+/// allowed and left out of the chart), its boundary loop is cut
 /// into four sides at `corners` (`corners[0]` goes to (0,0), the others follow
 /// counter-clockwise, see four_sides.h) or, if `corners` is empty, at
 /// `equal_arc_corners()` moved by `separate_flat_triangles()`; the diffusion coordinates of every vertex fill the chart.
@@ -69,8 +81,18 @@ Status parameterize_disc(const TriangleMesh& tm, VertexPointMap vpm,
   using Point_2 = typename Uv_atlas<TriangleMesh>::Point_2;
   if(&atlas.mesh() != &tm) throw std::invalid_argument("parameterize_disc: the atlas maps another mesh");
 
-  Status status = check_disc(tm);
+  Status status = check_disc(tm, true);
   if(!status) return status;
+
+  // Vertices on no face (reading's repair leaves the points it merged so, to
+  // keep the file's numbering) have no place in the chart: the disc of the
+  // others is mapped as a mesh of its own and its chart given back in `tm`'s
+  // vertices.
+  if(std::any_of(vertices(tm).begin(), vertices(tm).end(), [&](vertex_descriptor v) {
+       return halfedge(v, tm) == boost::graph_traits<TriangleMesh>::null_halfedge();
+     }))
+    return internal::parameterize_disc_without_isolated_vertices<DistanceTag, HeapTag>(tm, vpm, corners, atlas,
+                                                                                    options, report);
 
   const std::vector<vertex_descriptor> loop = counterclockwise_boundary(tm, boundary_loops(tm).front());
   if(loop.size() < 4)
@@ -119,6 +141,68 @@ Status parameterize_disc(const TriangleMesh& tm, VertexPointMap vpm,
   return Status();
 }
 
+namespace internal {
+
+/// parameterize_disc() on the faces of `tm`, copied without its isolated
+/// vertices (a `Patch_mesh`); the chart and the sides come back in `tm`'s vertices.
+template <class DistanceTag, class HeapTag, class TriangleMesh, class VertexPointMap>
+Status parameterize_disc_without_isolated_vertices(
+    const TriangleMesh& tm, VertexPointMap vpm,
+    const std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& corners,
+    Uv_atlas<TriangleMesh>& atlas, const Disc_parameterization_options& options,
+    Disc_parameterization_report<TriangleMesh>* report)
+{
+  using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
+  using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
+  Patch_mesh<TriangleMesh, VertexPointMap> copy;
+  std::vector<face_descriptor> all_faces(faces(tm).begin(), faces(tm).end());
+  if(!copy.build(tm, vpm, all_faces, [](face_descriptor f) { return f != boost::graph_traits<TriangleMesh>::null_face(); }))
+    return Status(Status_code::non_manifold, "the faces cannot be copied into a mesh of their own");
+  using Copy = typename Patch_mesh<TriangleMesh, VertexPointMap>::Mesh;
+  using copy_vertex = typename boost::graph_traits<Copy>::vertex_descriptor;
+  auto vindex = get(boost::vertex_index, tm);
+  std::vector<copy_vertex> local_corners;
+  for(vertex_descriptor c : corners) {
+    if(get(vindex, c) >= num_vertices(tm)) return Status(Status_code::corner_out_of_range);
+    if(!copy.has(tm, c))
+      return Status(Status_code::corner_not_on_border, "vertex " + std::to_string(get(vindex, c)) + " is on no face");
+    local_corners.push_back(copy.local(tm, c));
+  }
+  const Copy& disc = copy.mesh();
+  Uv_atlas<Copy> local_atlas(disc);
+  Disc_parameterization_report<Copy> local_report;
+  const Status status =
+      parameterize_disc<DistanceTag, HeapTag>(disc, disc.points(), local_corners, local_atlas, options, &local_report);
+  if(!status) return status;
+
+  const auto& mesh_vertex = copy.mesh_vertices();
+  const auto to_mesh = [&](const std::vector<copy_vertex>& side) {
+    std::vector<vertex_descriptor> out;
+    out.reserve(side.size());
+    for(copy_vertex v : side) out.push_back(mesh_vertex[v.idx()]);
+    return out;
+  };
+  std::vector<typename Uv_atlas<TriangleMesh>::Point_2> chart_uv;
+  chart_uv.reserve(num_vertices(disc));
+  const auto uv = local_atlas.chart_uv_map(0);
+  for(copy_vertex v : vertices(disc)) {
+    const auto q = get(uv, v);
+    chart_uv.emplace_back(CGAL::to_double(q.x()), CGAL::to_double(q.y()));
+  }
+  const std::size_t chart = atlas.add_chart(std::move(all_faces), mesh_vertex, std::move(chart_uv));
+  atlas.set_chart_size(chart, local_atlas.chart(0).size[0], local_atlas.chart(0).size[1]);
+  if(report) {
+    report->repair = local_report.repair;
+    report->sides.u1 = to_mesh(local_report.sides.u1);
+    report->sides.u2 = to_mesh(local_report.sides.u2);
+    report->sides.v1 = to_mesh(local_report.sides.v1);
+    report->sides.v2 = to_mesh(local_report.sides.v2);
+    for(std::size_t k = 0; k < 4; ++k) report->sides.corners[k] = mesh_vertex[local_report.sides.corners[k].idx()];
+  }
+  return Status();
+}
+
+} // namespace internal
 } // namespace diffuv
 
 #endif // DIFFUV_PARAMETERIZATION_PARAMETERIZE_DISC_H

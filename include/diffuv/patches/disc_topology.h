@@ -53,9 +53,12 @@ boundary_loops(const FaceGraph& tm)
 /// component, exactly one boundary loop and Euler characteristic V - E + F = 1.
 ///
 /// \tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph` with internal indices
+/// \param isolated_vertices_allowed if true, vertices on no face (such as the
+///        points that reading's repair merged into others) are left out of
+///        the check instead of refused
 /// \returns `ok`, or the first problem found with the vertex or count in the detail
 template <class TriangleMesh>
-Status check_disc(const TriangleMesh& tm)
+Status check_disc(const TriangleMesh& tm, bool isolated_vertices_allowed = false)
 {
   namespace PMP = CGAL::Polygon_mesh_processing;
   if(faces(tm).empty())
@@ -70,7 +73,12 @@ Status check_disc(const TriangleMesh& tm)
   // pass is O(H); PMP::is_non_manifold_vertex() is O(H) per vertex.
   std::vector<std::size_t> incoming(num_vertices(tm), 0);
   for(auto h : halfedges(tm)) ++incoming[get(vindex, target(h, tm))];
+  std::size_t isolated = 0;
   for(auto v : vertices(tm)) {
+    if(halfedge(v, tm) == boost::graph_traits<TriangleMesh>::null_halfedge() && isolated_vertices_allowed) {
+      ++isolated;
+      continue;
+    }
     if(halfedge(v, tm) == boost::graph_traits<TriangleMesh>::null_halfedge())
       return Status(Status_code::disconnected_mesh,
                     "vertex " + std::to_string(get(vindex, v)) + " belongs to no face");
@@ -89,7 +97,7 @@ Status check_disc(const TriangleMesh& tm)
   if(loops == 0) return Status(Status_code::no_border);
   if(loops > 1) return Status(Status_code::several_borders, std::to_string(loops) + " boundary loops");
 
-  return internal::disc_euler_status(static_cast<long long>(num_vertices(tm)) - static_cast<long long>(num_edges(tm)) +
+  return internal::disc_euler_status(static_cast<long long>(num_vertices(tm) - isolated) - static_cast<long long>(num_edges(tm)) +
                                      static_cast<long long>(num_faces(tm)));
 }
 

@@ -31,10 +31,11 @@
 #include <algorithm>
 #include <array>
 #include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <limits>
 #include <numeric>
 #include <string>
-#include <tuple>
-#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -77,60 +78,185 @@ struct Orientation_record : CGAL::Polygon_mesh_processing::Default_orientation_v
   void duplicated_vertex(std::size_t point, std::size_t copy) { copies->emplace_back(point, copy); }
 };
 
-/// A point's coordinates as a key: points that coincide exactly compare equal.
-template <class Point>
-std::tuple<double, double, double> position_key(const std::vector<Point>& points, std::size_t i)
+/// Sentinel of the index tables below.
+template <class Index>
+constexpr Index no_index = static_cast<Index>(-1);
+
+/// A 64-bit mix (the finaliser of MurmurHash3): spreads a key over the low
+/// bits that an open-addressing table of a power-of-two size uses.
+inline std::uint64_t mix_bits(std::uint64_t h)
 {
-  return std::make_tuple(CGAL::to_double(points[i].x()), CGAL::to_double(points[i].y()), CGAL::to_double(points[i].z()));
+  h ^= h >> 33;
+  h *= 0xff51afd7ed558ccdull;
+  h ^= h >> 33;
+  h *= 0xc4ceb9fe1a85ec53ull;
+  h ^= h >> 33;
+  return h;
+}
+
+/// A power of two at least twice `n` (and at least 16): the size of an
+/// open-addressing table that stays at most half full.
+inline std::size_t table_size_for(std::size_t n)
+{
+  std::size_t size = 16;
+  while(size < 2 * n) size *= 2;
+  return size;
+}
+
+/// For each point of `which` (in increasing order), the first point of
+/// `which` at exactly the same position; `no_index` for the points not in
+/// `which`. 0 and -0 are one position. An open-addressing table over the
+/// coordinates' bits: linear in the number of points, where sorting them by
+/// position cost more than reading the file.
+template <class Index, class Point>
+std::vector<Index> coinciding_points(const std::vector<Point>& points, const std::vector<Index>& which)
+{
+  std::vector<Index> first_at(points.size(), no_index<Index>);
+  const std::size_t mask = table_size_for(which.size()) - 1;
+  std::vector<Index> table(mask + 1, no_index<Index>);
+  const auto coordinates = [&](std::size_t i) {
+    // + 0.0 turns -0 into 0, which compare equal but differ in their bits.
+    return std::array<double, 3>{CGAL::to_double(points[i].x()) + 0.0, CGAL::to_double(points[i].y()) + 0.0,
+                                 CGAL::to_double(points[i].z()) + 0.0};
+  };
+  for(Index i : which) {
+    const std::array<double, 3> at = coordinates(i);
+    std::uint64_t h = 0;
+    for(double x : at) {
+      std::uint64_t bits;
+      std::memcpy(&bits, &x, sizeof bits);
+      h = mix_bits(h ^ bits);
+    }
+    for(std::size_t slot = h & mask;; slot = (slot + 1) & mask) {
+      if(table[slot] == no_index<Index>) {
+        table[slot] = i;
+        first_at[i] = i;
+        break;
+      }
+      if(coordinates(table[slot]) == at) {
+        first_at[i] = table[slot];
+        break;
+      }
+    }
+  }
+  return first_at;
+}
+
+/// An edge of a polygon, seen from its lower end: the polygons' edges are
+/// grouped by their lower end (a counting sort) and, within a group, sorted
+/// by the other end, so that the polygons sharing an edge are adjacent.
+template <class Index>
+struct Soup_half_edge {
+  Index other;   ///< the higher end
+  Index polygon; ///< the polygon it belongs to
+  Index corner;  ///< the edge goes from the polygon's corner `corner` to the next
+  bool forward;  ///< the polygon goes from the lower end to the higher
+};
+
+/// The edges of `polygons` (of points below `nb_points`; edges from a point
+/// to itself left out), the edges of lower end v at
+/// `edges[first[v] .. first[v + 1])`, sorted by (other end, polygon).
+/// Linear in the soup's size but for the sort of each point's few edges.
+template <class Index>
+void soup_half_edges(const std::vector<std::vector<std::size_t>>& polygons, std::size_t nb_points,
+                     std::vector<std::size_t>& first, std::vector<Soup_half_edge<Index>>& edges)
+{
+  first.assign(nb_points + 1, 0);
+  for(const auto& polygon : polygons)
+    for(std::size_t c = 0, n = polygon.size(); c < n; ++c) {
+      const std::size_t a = polygon[c], b = polygon[c + 1 < n ? c + 1 : 0];
+      if(a != b) ++first[(std::min)(a, b) + 1];
+    }
+  for(std::size_t v = 0; v < nb_points; ++v) first[v + 1] += first[v];
+  edges.resize(first[nb_points]);
+  std::vector<std::size_t> fill(first.begin(), first.end() - 1);
+  for(std::size_t p = 0; p < polygons.size(); ++p)
+    for(std::size_t c = 0, n = polygons[p].size(); c < n; ++c) {
+      const std::size_t a = polygons[p][c], b = polygons[p][c + 1 < n ? c + 1 : 0];
+      if(a != b)
+        edges[fill[(std::min)(a, b)]++] = {static_cast<Index>((std::max)(a, b)), static_cast<Index>(p),
+                                           static_cast<Index>(c), a < b};
+    }
+  for(std::size_t v = 0; v < nb_points; ++v)
+    if(first[v + 1] - first[v] > 1)
+      std::sort(edges.begin() + static_cast<std::ptrdiff_t>(first[v]),
+                edges.begin() + static_cast<std::ptrdiff_t>(first[v + 1]),
+                [](const Soup_half_edge<Index>& x, const Soup_half_edge<Index>& y) {
+                  return x.other != y.other ? x.other < y.other : x.polygon < y.polygon;
+                });
+}
+
+/// Calls `group(v, begin, end)` for each run of edges of `soup_half_edges()`
+/// that join the same two points: one edge of the soup and its polygons.
+template <class Index, class Group>
+void for_each_soup_edge(const std::vector<std::size_t>& first, const std::vector<Soup_half_edge<Index>>& edges,
+                        Group group)
+{
+  for(std::size_t v = 0; v + 1 < first.size(); ++v)
+    for(std::size_t k = first[v]; k < first[v + 1];) {
+      std::size_t end = k + 1;
+      while(end < first[v + 1] && edges[end].other == edges[k].other) ++end;
+      group(v, k, end);
+      k = end;
+    }
+}
+
+/// With `manifold` set true when the soup is a manifold, consistently oriented
+/// polygon mesh: the number of its border points that lie exactly where an
+/// earlier border point lies (borders that stitching would look at; 0 when
+/// the soup is not such a mesh).
+template <class Index, class Point>
+std::size_t coinciding_border_points(const std::vector<Point>& points,
+                                     const std::vector<std::vector<std::size_t>>& polygons, bool& manifold)
+{
+  std::vector<char> on_border;
+  manifold = is_manifold_oriented_soup(polygons, points.size(), &on_border);
+  if(!manifold) return 0;
+  std::vector<Index> border;
+  for(std::size_t i = 0; i < on_border.size(); ++i)
+    if(on_border[i]) border.push_back(static_cast<Index>(i));
+  const std::vector<Index> first_at = coinciding_points(points, border);
+  std::size_t coinciding = 0;
+  for(Index i : border) coinciding += first_at[i] != i ? 1 : 0;
+  return coinciding;
 }
 
 /// True when the soup needs none of the repairs: a manifold, consistently
 /// oriented polygon mesh, no face using a point twice, no two border points
 /// at one position (the first thing stitching would look at).
-template <class Point>
+template <class Index, class Point>
 bool soup_needs_no_repair(const std::vector<Point>& points, const std::vector<std::vector<std::size_t>>& polygons)
 {
+  std::vector<std::size_t> sorted;
   for(const auto& polygon : polygons) {
     if(polygon.size() == 3) {
       if(polygon[0] == polygon[1] || polygon[1] == polygon[2] || polygon[0] == polygon[2]) return false;
       continue;
     }
-    std::vector<std::size_t> sorted = polygon;
+    sorted.assign(polygon.begin(), polygon.end());
     std::sort(sorted.begin(), sorted.end());
     if(std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) return false;
   }
-  std::vector<char> on_border;
-  if(!is_manifold_oriented_soup(polygons, points.size(), &on_border)) return false;
-  std::vector<std::size_t> border;
-  for(std::size_t i = 0; i < on_border.size(); ++i)
-    if(on_border[i]) border.push_back(i);
-  const auto position = [&](std::size_t i) { return position_key(points, i); };
-  std::sort(border.begin(), border.end(), [&](std::size_t a, std::size_t b) { return position(a) < position(b); });
-  for(std::size_t k = 1; k < border.size(); ++k)
-    if(position(border[k - 1]) == position(border[k])) return false;
-  return true;
+  bool manifold = false;
+  return coinciding_border_points<Index>(points, polygons, manifold) == 0 && manifold;
 }
 
-/// Repairs the soup (see the top of this file) in place: `polygons` loses
-/// the faces dropped and has the others oriented and renumbered, `points`
-/// gains the copies of non-manifold points. The file's points keep their
-/// numbers. Counts go to `report`.
-/// \returns the maps from the file's elements to the repaired soup's (empty
-///          when nothing was repaired)
-/// \throws Input_error naming `path`: "the surface is not orientable ...",
-///         "non-manifold edge or vertex left after repair (...)"
-template <class Point>
-Soup_repair_map repair_polygon_soup(const std::string& path, std::vector<Point>& points,
-                                    std::vector<std::vector<std::size_t>>& polygons, Line_locator& locate,
-                                    Mesh_repair_report& report)
+/// repair_polygon_soup() with indices of type `Index` (32 bits when the soup
+/// allows: the pages of fresh memory are much of what the repair costs).
+template <class Index, class Point>
+Soup_repair_map repair_polygon_soup_as(const std::string& path, std::vector<Point>& points,
+                                       std::vector<std::vector<std::size_t>>& polygons, Line_locator& locate,
+                                       Mesh_repair_report& report)
 {
   using Polygon = std::vector<std::size_t>;
+  using Edge = Soup_half_edge<Index>;
   Soup_repair_map map;
   report = Mesh_repair_report();
-  if(soup_needs_no_repair(points, polygons)) return map;
+  if(soup_needs_no_repair<Index>(points, polygons)) return map;
 
   const std::size_t file_points = points.size();
-  const auto position = [&](std::size_t i) { return position_key(points, i); };
+  std::vector<std::size_t> first;
+  std::vector<Edge> edges;
 
   // ---- stitching: border edges (edges of one face) that coincide in pairs
   // have their points merged, each into the one of smallest index. Points
@@ -138,78 +264,128 @@ Soup_repair_map repair_polygon_soup(const std::string& path, std::vector<Point>&
   std::vector<std::size_t> merged_into(file_points);
   std::iota(merged_into.begin(), merged_into.end(), std::size_t(0));
   {
-    struct Edge { std::size_t a, b; };
-    std::vector<Edge> edges;
-    for(const Polygon& polygon : polygons)
-      for(std::size_t c = 0, n = polygon.size(); c < n; ++c) {
-        const std::size_t a = polygon[c], b = polygon[c + 1 < n ? c + 1 : 0];
-        if(a != b) edges.push_back({(std::min)(a, b), (std::max)(a, b)});
+    soup_half_edges(polygons, file_points, first, edges);
+    struct Border_edge { Index a, b, at_a, at_b; }; // at_a < at_b: the first points at the ends' positions
+    std::vector<Border_edge> border;
+    for_each_soup_edge(first, edges, [&](std::size_t v, std::size_t k, std::size_t end) {
+      if(end == k + 1) border.push_back({static_cast<Index>(v), edges[k].other, 0, 0});
+    });
+    if(!border.empty()) {
+      std::vector<Index> ends;
+      {
+        std::vector<char> is_end(file_points, 0);
+        for(const Border_edge& e : border) is_end[e.a] = is_end[e.b] = 1;
+        for(std::size_t i = 0; i < file_points; ++i)
+          if(is_end[i]) ends.push_back(static_cast<Index>(i));
       }
-    std::sort(edges.begin(), edges.end(), [](const Edge& x, const Edge& y) { return std::tie(x.a, x.b) < std::tie(y.a, y.b); });
-    std::vector<Edge> border;
-    for(std::size_t k = 0; k < edges.size();) {
-      std::size_t end = k + 1;
-      while(end < edges.size() && edges[end].a == edges[k].a && edges[end].b == edges[k].b) ++end;
-      if(end == k + 1) {
-        Edge e = edges[k];
-        if(position(e.b) < position(e.a)) std::swap(e.a, e.b); // ends ordered by position
-        border.push_back(e);
+      const std::vector<Index> first_at = coinciding_points(points, ends);
+      std::size_t kept_edges = 0;
+      for(Border_edge e : border) {
+        e.at_a = first_at[e.a];
+        e.at_b = first_at[e.b];
+        if(e.at_a == e.at_b) continue; // both ends at one position: nothing to stitch along
+        if(e.at_b < e.at_a) {
+          std::swap(e.a, e.b);
+          std::swap(e.at_a, e.at_b);
+        }
+        border[kept_edges++] = e;
       }
-      k = end;
-    }
-    const auto key = [&](const Edge& e) { return std::make_pair(position(e.a), position(e.b)); };
-    std::sort(border.begin(), border.end(), [&](const Edge& x, const Edge& y) { return key(x) < key(y); });
-    std::vector<std::size_t> parent = merged_into;
-    const auto root = [&](std::size_t i) {
-      while(parent[i] != i) i = parent[i] = parent[parent[i]];
-      return i;
-    };
-    const auto unite = [&](std::size_t i, std::size_t j) {
-      i = root(i);
-      j = root(j);
-      if(i != j) parent[(std::max)(i, j)] = (std::min)(i, j);
-    };
-    for(std::size_t k = 0; k < border.size();) {
-      std::size_t end = k + 1;
-      while(end < border.size() && key(border[end]) == key(border[k])) ++end;
-      // Two border edges on one segment: one seam. Three or more would make
-      // an edge of three faces; they stay apart.
-      if(end == k + 2 && position(border[k].a) != position(border[k].b)) {
-        unite(border[k].a, border[k + 1].a);
-        unite(border[k].b, border[k + 1].b);
+      border.resize(kept_edges);
+      // Grouped by position: by the first end (a counting sort), then the second.
+      std::vector<std::size_t> at(file_points + 1, 0);
+      for(const Border_edge& e : border) ++at[e.at_a + 1];
+      for(std::size_t i = 0; i < file_points; ++i) at[i + 1] += at[i];
+      std::vector<Border_edge> by_position(border.size());
+      {
+        std::vector<std::size_t> fill(at.begin(), at.end() - 1);
+        for(const Border_edge& e : border) by_position[fill[e.at_a]++] = e;
       }
-      k = end;
-    }
-    for(std::size_t i = 0; i < file_points; ++i) {
-      merged_into[i] = root(i);
-      if(merged_into[i] != i) ++report.points_merged;
+      std::vector<std::size_t> parent = merged_into;
+      const auto root = [&](std::size_t i) {
+        while(parent[i] != i) i = parent[i] = parent[parent[i]];
+        return i;
+      };
+      const auto unite = [&](std::size_t i, std::size_t j) {
+        i = root(i);
+        j = root(j);
+        if(i != j) parent[(std::max)(i, j)] = (std::min)(i, j);
+      };
+      for(std::size_t i = 0; i < file_points; ++i) {
+        const auto begin = by_position.begin() + static_cast<std::ptrdiff_t>(at[i]);
+        const auto end = by_position.begin() + static_cast<std::ptrdiff_t>(at[i + 1]);
+        if(end - begin < 2) continue;
+        std::sort(begin, end, [](const Border_edge& x, const Border_edge& y) { return x.at_b < y.at_b; });
+        for(auto k = begin; k != end;) {
+          auto run = k + 1;
+          while(run != end && run->at_b == k->at_b) ++run;
+          // Two border edges on one segment: one seam. Three or more would
+          // make an edge of three faces; they stay apart.
+          if(run == k + 2) {
+            unite(k->a, (k + 1)->a);
+            unite(k->b, (k + 1)->b);
+          }
+          k = run;
+        }
+      }
+      for(std::size_t i = 0; i < file_points; ++i) {
+        merged_into[i] = root(i);
+        if(merged_into[i] != i) ++report.points_merged;
+      }
     }
   }
 
-  // ---- faces: renumbered, then dropped if they use a point twice or repeat an earlier face
+  // ---- faces: renumbered, then dropped if they use a point twice or
+  // repeat an earlier face (an open-addressing table of the kept faces,
+  // keyed by their sorted points).
   std::vector<Polygon> kept;
   kept.reserve(polygons.size());
   map.file_polygon.reserve(polygons.size());
   {
-    std::unordered_set<Polygon, Index_list_hash> seen;
-    for(std::size_t j = 0; j < polygons.size(); ++j) {
-      Polygon polygon;
-      polygon.reserve(polygons[j].size());
-      for(std::size_t v : polygons[j]) {
-        v = merged_into[v];
-        if(polygon.empty() || polygon.back() != v) polygon.push_back(v);
+    const std::size_t mask = table_size_for(polygons.size()) - 1;
+    std::vector<Index> table(mask + 1, no_index<Index>);
+    Polygon sorted, other;
+    const auto sort_into = [](const Polygon& polygon, Polygon& out) {
+      out.assign(polygon.begin(), polygon.end());
+      if(out.size() == 3) {
+        if(out[1] < out[0]) std::swap(out[0], out[1]);
+        if(out[2] < out[1]) std::swap(out[1], out[2]);
+        if(out[1] < out[0]) std::swap(out[0], out[1]);
+      } else {
+        std::sort(out.begin(), out.end());
       }
-      while(polygon.size() > 1 && polygon.back() == polygon.front()) polygon.pop_back();
-      Polygon sorted = polygon;
-      std::sort(sorted.begin(), sorted.end());
+    };
+    for(std::size_t j = 0; j < polygons.size(); ++j) {
+      Polygon& polygon = polygons[j];
+      if(report.points_merged > 0) {
+        std::size_t n = 0;
+        for(std::size_t v : polygon) {
+          v = merged_into[v];
+          if(n == 0 || polygon[n - 1] != v) polygon[n++] = v;
+        }
+        while(n > 1 && polygon[n - 1] == polygon[0]) --n;
+        polygon.resize(n);
+      }
+      sort_into(polygon, sorted);
       if(polygon.size() < 3 || std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) {
         ++report.degenerate_faces;
         continue;
       }
-      if(!seen.insert(std::move(sorted)).second) {
+      bool repeated = false;
+      std::size_t slot = mix_bits(Index_list_hash()(sorted)) & mask;
+      for(; table[slot] != no_index<Index>; slot = (slot + 1) & mask) {
+        const Polygon& earlier = kept[table[slot]];
+        if(earlier.size() != sorted.size()) continue;
+        sort_into(earlier, other);
+        if(other == sorted) {
+          repeated = true;
+          break;
+        }
+      }
+      if(repeated) {
         ++report.duplicate_faces;
         continue;
       }
+      table[slot] = static_cast<Index>(kept.size());
       kept.push_back(std::move(polygon));
       map.file_polygon.push_back(j);
     }
@@ -224,45 +400,25 @@ Soup_repair_map repair_polygon_soup(const std::string& path, std::vector<Point>&
   // of its faces had.
   std::vector<char> turned(kept.size(), 0);
   {
-    struct Side {
-      std::size_t a, b, polygon;
-      bool forward; // the face goes from a to b (a < b)
-    };
-    std::vector<Side> sides;
-    for(std::size_t p = 0; p < kept.size(); ++p)
-      for(std::size_t c = 0, n = kept[p].size(); c < n; ++c) {
-        const std::size_t a = kept[p][c], b = kept[p][c + 1 < n ? c + 1 : 0];
-        sides.push_back({(std::min)(a, b), (std::max)(a, b), p, a < b});
-      }
-    std::sort(sides.begin(), sides.end(), [](const Side& x, const Side& y) {
-      return x.a != y.a ? x.a < y.a : x.b != y.b ? x.b < y.b : x.polygon < y.polygon;
-    });
-    // The links between faces (the other face, and whether it must be
-    // turned relative to this one), stored face by face.
-    struct Link { std::size_t face, a, b; bool flip; };
-    std::vector<std::size_t> first(kept.size() + 1, 0);
-    std::vector<std::pair<std::size_t, Link>> pairs;
-    for(std::size_t k = 0; k < sides.size();) {
-      std::size_t end = k + 1;
-      while(end < sides.size() && sides[end].a == sides[k].a && sides[end].b == sides[k].b) ++end;
+    // The edges of the stitching pass serve unless a point was merged or a face dropped.
+    if(report.points_merged > 0 || kept.size() != polygons.size()) soup_half_edges(kept, points.size(), first, edges);
+    // The face across each corner's edge (when exactly two faces share it),
+    // and whether it must be turned relative to this one.
+    struct Link { Index face; bool flip; };
+    std::vector<std::size_t> corner_of(kept.size() + 1, 0);
+    for(std::size_t p = 0; p < kept.size(); ++p) corner_of[p + 1] = corner_of[p] + kept[p].size();
+    std::vector<Link> links(corner_of.back(), Link{no_index<Index>, false});
+    for_each_soup_edge(first, edges, [&](std::size_t, std::size_t k, std::size_t end) {
       if(end == k + 2) {
-        const Side& x = sides[k];
-        const Side& y = sides[k + 1];
+        const Edge& x = edges[k];
+        const Edge& y = edges[k + 1];
         const bool flip = x.forward == y.forward;
-        pairs.push_back({x.polygon, {y.polygon, x.a, x.b, flip}});
-        pairs.push_back({y.polygon, {x.polygon, x.a, x.b, flip}});
+        links[corner_of[x.polygon] + x.corner] = {y.polygon, flip};
+        links[corner_of[y.polygon] + y.corner] = {x.polygon, flip};
       } else if(end > k + 2) {
         ++report.non_manifold_edges;
       }
-      k = end;
-    }
-    for(const auto& pair : pairs) ++first[pair.first + 1];
-    for(std::size_t p = 0; p < kept.size(); ++p) first[p + 1] += first[p];
-    std::vector<Link> links(pairs.size());
-    {
-      std::vector<std::size_t> fill(first.begin(), first.end() - 1);
-      for(const auto& pair : pairs) links[fill[pair.first]++] = pair.second;
-    }
+    });
     std::vector<char> seen(kept.size(), 0);
     std::vector<std::size_t> members, stack;
     for(std::size_t start = 0; start < kept.size(); ++start) {
@@ -274,8 +430,9 @@ Soup_repair_map repair_polygon_soup(const std::string& path, std::vector<Point>&
         const std::size_t p = stack.back();
         stack.pop_back();
         members.push_back(p);
-        for(std::size_t k = first[p]; k < first[p + 1]; ++k) {
-          const Link& link = links[k];
+        for(std::size_t c = 0, n = kept[p].size(); c < n; ++c) {
+          const Link& link = links[corner_of[p] + c];
+          if(link.face == no_index<Index>) continue;
           const char wanted = static_cast<char>(turned[p] ^ (link.flip ? 1 : 0));
           if(!seen[link.face]) {
             seen[link.face] = 1;
@@ -283,11 +440,13 @@ Soup_repair_map repair_polygon_soup(const std::string& path, std::vector<Point>&
             stack.push_back(link.face);
           } else if(turned[link.face] != wanted) {
             const std::size_t f = map.file_polygon[p], g = map.file_polygon[link.face];
+            const std::size_t a = kept[p][c], b = kept[p][c + 1 < n ? c + 1 : 0];
             throw Input_error(path, locate.face_line((std::max)(f, g)),
                               "the surface is not orientable (like a Moebius strip): faces " +
                                   std::to_string((std::min)(f, g)) + " and " + std::to_string((std::max)(f, g)) +
-                                  " meet at the edge between vertices " + std::to_string(link.a) + " and " +
-                                  std::to_string(link.b) + " and no orientation of the faces makes them agree there");
+                                  " meet at the edge between vertices " + std::to_string((std::min)(a, b)) + " and " +
+                                  std::to_string((std::max)(a, b)) +
+                                  " and no orientation of the faces makes them agree there");
           }
         }
       }
@@ -303,8 +462,6 @@ Soup_repair_map repair_polygon_soup(const std::string& path, std::vector<Point>&
   // ---- non-manifold points (and the ends of edges of three or more faces),
   // by CGAL: the faces now agree wherever they can, so its orientation pass
   // keeps them and its second pass gives each extra fan a copy.
-  map.point_of_vertex.resize(points.size());
-  std::iota(map.point_of_vertex.begin(), map.point_of_vertex.end(), std::size_t(0));
   if(report.non_manifold_edges > 0 || !is_manifold_oriented_soup(kept, points.size())) {
     std::vector<std::pair<std::size_t, std::size_t>> copies;
     Orientation_record record;
@@ -316,23 +473,46 @@ Soup_repair_map repair_polygon_soup(const std::string& path, std::vector<Point>&
     std::sort(split.begin(), split.end());
     report.vertices_split = static_cast<std::size_t>(std::unique(split.begin(), split.end()) - split.begin());
     report.vertex_copies = copies.size();
-    map.point_of_vertex.resize(points.size());
-    for(std::size_t v = file_points; v < points.size(); ++v) map.point_of_vertex[v] = v;
-    for(const auto& [point, copy] : copies) map.point_of_vertex[copy] = map.point_of_vertex[point];
+    if(!copies.empty()) {
+      map.point_of_vertex.resize(points.size());
+      std::iota(map.point_of_vertex.begin(), map.point_of_vertex.end(), std::size_t(0));
+      for(const auto& [point, copy] : copies) map.point_of_vertex[copy] = map.point_of_vertex[point];
+    }
+    if(!is_manifold_oriented_soup(kept, points.size())) {
+      std::size_t face = 0;
+      const std::string detail = describe_non_manifold(kept, points.size(), face);
+      const std::size_t file_face = face == std::size_t(-1) ? std::size_t(-1) : map.file_polygon[face];
+      throw Input_error(path, file_face == std::size_t(-1) ? 0 : locate.face_line(file_face),
+                        "non-manifold edge or vertex left after repair" + (detail.empty() ? std::string() : " (" + detail + ")"));
+    }
   }
   for(char t : turned) report.faces_reoriented += t ? 1 : 0;
-
-  if(!is_manifold_oriented_soup(kept, points.size())) {
-    std::size_t face = 0;
-    const std::string detail = describe_non_manifold(kept, points.size(), face);
-    const std::size_t file_face = face == std::size_t(-1) ? std::size_t(-1) : map.file_polygon[face];
-    throw Input_error(path, file_face == std::size_t(-1) ? 0 : locate.face_line(file_face),
-                      "non-manifold edge or vertex left after repair" + (detail.empty() ? std::string() : " (" + detail + ")"));
-  }
 
   map.vertex_of_point = std::move(merged_into);
   polygons = std::move(kept);
   return map;
+}
+
+/// Repairs the soup (see the top of this file) in place: `polygons` loses
+/// the faces dropped and has the others oriented and renumbered, `points`
+/// gains the copies of non-manifold points. The file's points keep their
+/// numbers. Counts go to `report`.
+/// \returns the maps from the file's elements to the repaired soup's (empty
+///          when nothing was repaired)
+/// \throws Input_error naming `path`: "the surface is not orientable ...",
+///         "non-manifold edge or vertex left after repair (...)"
+template <class Point>
+Soup_repair_map repair_polygon_soup(const std::string& path, std::vector<Point>& points,
+                                    std::vector<std::vector<std::size_t>>& polygons, Line_locator& locate,
+                                    Mesh_repair_report& report)
+{
+  // Copies of split points may be added: leave room for one per corner.
+  std::size_t corners = 0;
+  for(const auto& polygon : polygons) corners += polygon.size();
+  const std::uint64_t limit = std::numeric_limits<std::uint32_t>::max();
+  if(points.size() + corners < limit && polygons.size() < limit)
+    return repair_polygon_soup_as<std::uint32_t>(path, points, polygons, locate, report);
+  return repair_polygon_soup_as<std::size_t>(path, points, polygons, locate, report);
 }
 
 } // namespace internal
