@@ -242,13 +242,13 @@ const std::vector<Catalogue_entry>& catalogue()
       // The same files repaired (the default): a result, the repair on the summary's second line.
       {"duplicate_vertices_not_welded",
        {{"m.off", "OFF\n10 8 0\n" + grid_points + "1 1 0\n3 0 1 4\n3 0 4 3\n3 1 2 5\n3 1 5 9\n3 3 4 7\n3 3 7 6\n3 9 5 8\n3 9 8 7\n"}},
-       m, 0, "", "10 vertices, 8 faces, 1 isolated vertex (in no face: no (u,v))\nrepaired: 1 coinciding point merged (borders stitched) (--strict-input turns repairs off)\n"},
+       m, 0, "", "10 vertices, 8 faces\nrepaired: 1 coinciding point merged (borders stitched; a merged point has no (u,v) of its own) (--strict-input turns repairs off)\n"},
       {"unwelded_seam",
        {{"m.off", "OFF\n12 8 0\n" + grid_points + "1 0 0\n1 1 0\n1 2 0\n3 0 1 4\n3 0 4 3\n3 9 2 5\n3 9 5 10\n"
                   "3 3 4 7\n3 3 7 6\n3 10 5 8\n3 10 8 11\n"}},
        m, 0, "",
-       "12 vertices, 8 faces, 3 isolated vertices (in no face: no (u,v))\nrepaired: 3 coinciding points merged (borders "
-       "stitched) (--strict-input turns repairs off)\n"},
+       "12 vertices, 8 faces\nrepaired: 3 coinciding points merged (borders stitched; a merged point has no (u,v) of "
+       "its own) (--strict-input turns repairs off)\n"},
       {"non_manifold_edge", {{"m.off", "OFF\n10 10 0\n" + grid_points + "1 -1 1\n" + grid_faces + "3 1 0 9\n3 0 1 9\n"}}, m, 0,
        "", "\nrepaired: 1 duplicate face dropped (--strict-input turns repairs off)\n"},
       {"non_manifold_edge_of_three_faces",
@@ -262,8 +262,9 @@ const std::vector<Catalogue_entry>& catalogue()
       {"moebius_strip", // three quads, the last joined to the first with a half twist
        {{"m.off", "OFF\n6 6 0\n1.5 0 0\n2.5 0 0\n-0.875 1.516 -0.433\n-1.125 1.949 0.433\n-1.125 -1.949 -0.433\n"
                   "-0.875 -1.516 0.433\n3 0 1 3\n3 0 3 2\n3 2 3 5\n3 2 5 4\n3 4 5 0\n3 4 0 1\n"}}, m, 1,
-       "diffuv: error: {d}/m.off:14: the surface is not orientable (like a Moebius strip): faces 4 and 5 meet at the edge "
-       "between vertices 0 and 4 and no orientation of the faces makes them agree there\n"},
+       "diffuv: error: {d}/m.off:14: the surface is not orientable (like a Moebius strip): faces 0 and 5 disagree on the "
+       "direction of the edge between vertices 0 and 1, and no choice of orientations makes every face agree with its "
+       "neighbours\n"},
       {"moebius_strip_strict",
        {{"m.off", "OFF\n6 6 0\n1.5 0 0\n2.5 0 0\n-0.875 1.516 -0.433\n-1.125 1.949 0.433\n-1.125 -1.949 -0.433\n"
                   "-0.875 -1.516 0.433\n3 0 1 3\n3 0 3 2\n3 2 3 5\n3 2 5 4\n3 4 5 0\n3 4 0 1\n"}}, m + " --strict-input", 1,

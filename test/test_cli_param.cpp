@@ -2,9 +2,12 @@
 // that cannot be mapped, --strict, --threads.
 #include "test_cli_tool.h"
 
+#include <diffuv/io/read_obj_charts.h>
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -53,6 +56,53 @@ TEST_F(Tool, NefertitiWithSquareCornersLandsOnTheUnitSquare)
   EXPECT_EQ(v, 299u);
   EXPECT_EQ(vt, 299u); // one chart: one vt per vertex
   EXPECT_EQ(f, 562u);
+}
+
+// The OBJ's charts are packed side by side into one texture (issue #22):
+// read back, every texture coordinate lies in [0,1]^2, the charts' boxes are
+// pairwise apart by at least the gutters, and the summary says how much of
+// the texture they cover. --stacked draws them all from the origin instead.
+TEST_F(Tool, TheObjChartsArePackedIntoOneTexture)
+{
+  const Tool_run r = run("param " + data_path("meshes/cow.off") + " --texture-size 512 --gutter 3 -o " + out_dir().string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::size_t at = r.out.find(" charts packed into 512 x 512 texels (gutter 3): ");
+  ASSERT_NE(at, std::string::npos) << r.out;
+  const double covered = std::stod(r.out.substr(at + std::string(" charts packed into 512 x 512 texels (gutter 3): ").size()));
+  EXPECT_GT(covered, 50.);
+  EXPECT_LT(covered, 100.);
+  const diffuv::Obj_charts obj = diffuv::read_obj_charts((out_dir() / "cow.obj").string());
+  ASSERT_GT(obj.number_of_charts, 10u);
+  std::vector<std::array<double, 4>> box(obj.number_of_charts, {1e9, 1e9, -1e9, -1e9}); // texels
+  for(std::size_t t = 0; t < obj.triangles.size(); ++t)
+    for(std::size_t k : obj.triangle_uv[t]) {
+      const auto& q = obj.texcoords[k];
+      ASSERT_TRUE(q[0] >= 0 && q[0] <= 1 && q[1] >= 0 && q[1] <= 1) << q[0] << ' ' << q[1];
+      auto& b = box[obj.chart[t]];
+      b = {std::min(b[0], 512 * q[0]), std::min(b[1], 512 * q[1]), std::max(b[2], 512 * q[0]), std::max(b[3], 512 * q[1])};
+    }
+  // The OBJ's charts are its connected pieces of texture coordinates: the
+  // packed ones never touch, so each is one patch's chart, 6 texels from any other.
+  for(std::size_t a = 0; a < box.size(); ++a)
+    for(std::size_t b = a + 1; b < box.size(); ++b) {
+      const double gap = std::max({box[b][0] - box[a][2], box[a][0] - box[b][2], box[b][1] - box[a][3], box[a][1] - box[b][3]});
+      EXPECT_GE(gap, 6. - 1e-6) << "charts " << a << " and " << b;
+    }
+
+  const Tool_run stacked = run("param " + data_path("meshes/cow.off") + " --stacked -o " + (out_dir() / "stacked").string());
+  ASSERT_EQ(stacked.code, 0) << stacked.err;
+  EXPECT_EQ(stacked.out.find("charts packed"), std::string::npos) << stacked.out;
+  const diffuv::Obj_charts on_top = diffuv::read_obj_charts((out_dir() / "stacked" / "cow.obj").string());
+  std::size_t from_origin = 0;
+  for(std::size_t t = 0; t < on_top.triangles.size(); ++t)
+    for(std::size_t k : on_top.triangle_uv[t]) from_origin += on_top.texcoords[k][0] == 0 && on_top.texcoords[k][1] == 0;
+  EXPECT_GT(from_origin, 100u); // every chart has a corner at (0,0)
+
+  // Gutters the texture cannot hold: a usage error naming the options.
+  const Tool_run tight = run("param " + data_path("meshes/cow.off") + " --texture-size 16 -o " + (out_dir() / "tight").string());
+  EXPECT_EQ(tight.code, 2) << tight.err;
+  EXPECT_NE(tight.err.find("raise --texture-size or lower --gutter"), std::string::npos) << tight.err;
+  EXPECT_FALSE(std::filesystem::exists(out_dir() / "tight"));
 }
 
 TEST_F(Tool, ClosedMeshesAreCutIntoPatchesAndEveryVertexIsMapped)

@@ -26,6 +26,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -1905,6 +1906,38 @@ TEST_F(IoReadMesh, MostFacesKeepTheirOrientation)
   }
 }
 
+// A closed mesh whose faces were turned more often than not is read facing
+// outwards (its signed volume positive), and an open one keeps the
+// orientation most of its faces had: cow with three faces in four turned
+// over, and the same with one face removed (then open).
+TEST_F(IoReadMesh, AClosedMeshFacesOutwards)
+{
+  const File_soup cow = diffuv_test::parse_off(diffuv_test::data_path("meshes/cow.off"));
+  const auto write_turned = [&](const std::string& name, std::size_t skip) {
+    std::ostringstream off;
+    const std::size_t faces = cow.faces.size() - (skip < cow.faces.size() ? 1 : 0);
+    off << std::setprecision(17) << "OFF\n" << cow.points.size() << ' ' << faces << " 0\n";
+    for(const auto& p : cow.points) off << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
+    for(std::size_t j = 0; j < cow.faces.size(); ++j) {
+      if(j == skip) continue;
+      std::vector<std::size_t> f = cow.faces[j];
+      if(j % 4 != 0) std::reverse(f.begin(), f.end());
+      off << f.size();
+      for(std::size_t i : f) off << ' ' << i;
+      off << '\n';
+    }
+    return write(name, off.str());
+  };
+  diffuv::Mesh_read_report report;
+  const Mesh closed = read_repaired(write_turned("closed.off", std::size_t(-1)), report);
+  ASSERT_TRUE(CGAL::is_closed(closed));
+  EXPECT_GT(CGAL::to_double(CGAL::Polygon_mesh_processing::volume(closed)), 0.);
+  EXPECT_EQ(report.repair.faces_reoriented, cow.faces.size() - (cow.faces.size() + 3) / 4); // the turned ones back
+  const Mesh open = read_repaired(write_turned("open.off", 1), report);
+  ASSERT_FALSE(CGAL::is_closed(open));
+  EXPECT_EQ(report.repair.faces_reoriented, (cow.faces.size() + 3) / 4); // the few, against most of the faces
+}
+
 TEST_F(IoReadMesh, NonManifoldPlacesAreSplit)
 {
   const std::string points = "0 0 0\n1 0 0\n0 1 0\n0 -1 0\n0 0 1\n";
@@ -1948,7 +1981,27 @@ TEST_F(IoReadMesh, MoebiusStripIsRefused)
   }
   const diffuv::Input_error e = read_error(write("moebius.off", off.str()));
   EXPECT_EQ(e.reason().rfind("the surface is not orientable (like a Moebius strip): faces ", 0), 0u) << e.reason();
-  EXPECT_NE(e.reason().find(" meet at the edge between vertices "), std::string::npos) << e.reason();
+  EXPECT_NE(e.reason().find(" disagree on the direction of the edge between vertices "), std::string::npos) << e.reason();
+  // The faces named are where the strip's twist is: in the file, both go
+  // the same way along the edge named.
+  std::size_t f = 0, g = 0, a = 0, b = 0;
+  ASSERT_EQ(std::sscanf(e.reason().c_str(),
+                        "the surface is not orientable (like a Moebius strip): faces %zu and %zu disagree on the "
+                        "direction of the edge between vertices %zu and %zu",
+                        &f, &g, &a, &b),
+            4)
+      << e.reason();
+  const File_soup soup = diffuv_test::parse_off(write("moebius.off", off.str()));
+  const auto direction = [&](std::size_t face) {
+    const auto& p = soup.faces.at(face);
+    for(std::size_t k = 0; k < p.size(); ++k) {
+      if(p[k] == a && p[(k + 1) % p.size()] == b) return 1;
+      if(p[k] == b && p[(k + 1) % p.size()] == a) return -1;
+    }
+    return 0;
+  };
+  EXPECT_NE(direction(f), 0);
+  EXPECT_EQ(direction(f), direction(g)) << e.reason();
   EXPECT_GT(e.line(), 2u + 2 * n);
 }
 

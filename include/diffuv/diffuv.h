@@ -3,7 +3,7 @@
 // Includes every public header of the core target (diffuv::diffuv), layer by
 // layer, lowest first (doc/design.md, "Layers"; scripts/check_layers.py
 // checks that this list is complete). Not included: render/, the optional
-// diffuv::render target (pictures and PNG files, through stb).
+// diffuv::render target (pictures, PNG files and the packed atlas, through stb).
 //
 //   core/             the vocabulary: Status and the error types, the four sides, colours and the label palette
 //   io/               reading: meshes (OFF, OBJ, PLY, STL), labels, painted regions, corners, colours; safe output files

@@ -240,7 +240,7 @@ inline std::string repair_line(const Input_mesh& in)
 {
   const diffuv::Mesh_repair_report& r = in.report.repair;
   std::vector<std::string> parts;
-  if(r.points_merged) parts.push_back(count_text(r.points_merged, "coinciding point") + " merged (borders stitched)");
+  if(r.points_merged) parts.push_back(count_text(r.points_merged, "coinciding point") + " merged (borders stitched; a merged point has no (u,v) of its own)");
   if(r.degenerate_faces) parts.push_back(count_text(r.degenerate_faces, "face") + " using a point twice dropped");
   if(r.duplicate_faces) parts.push_back(count_text(r.duplicate_faces, "duplicate face") + " dropped");
   if(r.faces_reoriented) parts.push_back(count_text(r.faces_reoriented, "face") + " reoriented");

@@ -11,10 +11,12 @@
 #include <diffuv/io/selection_file.h>
 #include <diffuv/output/write_obj.h>
 #include <diffuv/output/write_uv_table.h>
+#include <diffuv/render/pack_charts.h>
 #include <diffuv/render/texture.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -102,10 +104,18 @@ void run_param(const Param_options& options)
   std::string first_failure;
   for(std::size_t p = 0; p < result.patches.size(); ++p)
     if(!result.patches[p].status && failed++ == 0) first_failure = result.patches[p].status.what();
-  if(failed > 0 && (failed == result.patches.size() || options.patches.strict))
+  if(failed > 0 && (failed == result.patches.size() || options.patches.strict)) {
+    // Patches of a face or two each: the mesh is most likely an export whose
+    // triangles do not share their points.
+    const bool crumbs = 2 * result.patches.size() >= num_faces(in.mesh) && result.patches.size() > 1;
     throw diffuv::Input_error(in.labels_path.empty() ? in.path : in.labels_path, 0,
                               std::to_string(failed) + " of " + count_text(result.patches.size(), "patch", "patches") +
-                                  " cannot be parameterized; the first: " + first_failure);
+                                  " cannot be parameterized; the first: " + first_failure +
+                                  (crumbs ? std::string(" (the mesh falls apart into pieces of one or two faces: if the "
+                                                        "file is an export whose faces do not share their points, weld "
+                                                        "it; reading stitches only borders whose points coincide exactly)")
+                                          : std::string()));
+  }
 
   // Everything is computed before anything is written: all files or none.
   const std::vector<std::string> inputs = {in.path, options.corners, options.patches.labels};
@@ -114,18 +124,45 @@ void run_param(const Param_options& options)
   const std::vector<Chart_measure> measures = options.no_measure ? std::vector<Chart_measure>(result.patches.size())
                                                                   : measure_charts(in, result, options.unit_squares);
   if(!options.no_measure) stages.done("measure");
+  // The charts packed into one texture (unless stacked at its origin).
+  const bool packed = outputs.obj && !options.unit_squares && !options.stacked;
+  diffuv::Chart_packing packing;
+  std::string atlas_line;
+  if(packed) {
+    try {
+      packing = diffuv::pack_charts(atlas, in.mesh.points(), diffuv::Chart_packing_options{options.texture_size, options.gutter});
+    } catch(const std::invalid_argument&) {
+      throw CLI::ValidationError("--texture-size", "the " + count_text(atlas.number_of_charts(), "chart") +
+                                                       " do not fit in " + std::to_string(options.texture_size) +
+                                                       " x " + std::to_string(options.texture_size) +
+                                                       " texels with gutters of " + std::to_string(options.gutter) +
+                                                       ": raise --texture-size or lower --gutter");
+    }
+    char line[200];
+    std::snprintf(line, sizeof line,
+                  "atlas: %zu charts packed into %d x %d texels (gutter %d): %.1f %% of the texels covered, %.4g texels "
+                  "per unit of length",
+                  atlas.number_of_charts(), options.texture_size, options.texture_size, options.gutter,
+                  100. * packing.coverage, packing.texels_per_unit);
+    atlas_line = line;
+  }
   diffuv::Output_folder out(options.output, inputs);
   if(outputs.obj) {
     // A textured OBJ: any viewer shows the map as a checkerboard on the mesh.
     const std::string texture = output_name(in.path, ".checker.png");
+    const std::string obj = output_name(in.path, ".obj"), mtl = output_name(in.path, ".mtl");
     if(options.unit_squares)
-      diffuv::write_obj(out.open(output_name(in.path, ".obj")), in.mesh, in.mesh.points(), atlas.corner_uv_map(),
-                        output_name(in.path, ".mtl"), "diffuv_checker");
+      diffuv::write_obj(out.open(obj), in.mesh, in.mesh.points(), atlas.corner_uv_map(), mtl, "diffuv_checker");
+    else if(options.stacked)
+      diffuv::write_obj(out.open(obj), in.mesh, in.mesh.points(), atlas.corner_texture_map(), mtl, "diffuv_checker");
     else
-      diffuv::write_obj(out.open(output_name(in.path, ".obj")), in.mesh, in.mesh.points(), atlas.corner_texture_map(),
-                        output_name(in.path, ".mtl"), "diffuv_checker");
-    diffuv::write_mtl(out.open(output_name(in.path, ".mtl")), "diffuv_checker", texture);
-    diffuv::write_png(out.open(texture), 512, 512, diffuv::checker_texture(512, 8));
+      diffuv::write_obj(out.open(obj), in.mesh, in.mesh.points(), diffuv::packed_corner_map(atlas, packing), mtl,
+                        "diffuv_checker");
+    diffuv::write_mtl(out.open(mtl), "diffuv_checker", texture);
+    // Packed: squares of 16 texels of the packed texture, the same size on
+    // every chart; stacked: 8 x 8 squares across each chart.
+    diffuv::write_png(out.open(texture), 512, 512,
+                      diffuv::checker_texture(512, packed ? std::max(8, options.texture_size / 16) : 8));
   }
   if(options.svg) write_uv_layouts(out, in, result);
   if(outputs.uv) diffuv::write_uv_table(out.open(output_name(in.path, ".uv.csv")), atlas);
@@ -137,8 +174,8 @@ void run_param(const Param_options& options)
   stages.done("write");
 
   if(!options.quiet)
-    print_param_report(Param_run{in, result, measures, total_ms, failed, stages, out.paths(), !options.no_measure},
-                       options);
+    print_param_report(
+        Param_run{in, result, measures, total_ms, failed, stages, out.paths(), !options.no_measure, atlas_line}, options);
   else
     print_param_warnings(Param_run{in, result, measures, total_ms, failed, stages, out.paths(), !options.no_measure});
 }
@@ -218,7 +255,7 @@ void add_param_command(CLI::App& app)
   auto options = std::make_shared<Param_options>();
   CLI::App* cmd = app.add_subcommand(
       "param", "Parameterize a mesh patch by patch, each onto a rectangle of its own aspect (--unit-squares: the unit "
-               "square); write OBJ (vt per corner), a uv table, "
+               "square); write OBJ (vt per corner, the charts packed into one texture), a uv table, "
                "the patches and a picture");
   add_common_options(cmd, *options);
   cmd->add_flag("--svg", options->svg, "Also write each patch's uv layout as OUTPUT/<mesh>.patch<N>.svg (flipped "
@@ -226,6 +263,18 @@ void add_param_command(CLI::App& app)
   cmd->add_flag("--unit-squares", options->unit_squares,
                 "Write every chart on the unit square (the canonical (u,v)) instead of on a rectangle of its own "
                 "aspect (the aspect with the least stretch for the chart's map); the table then measures the squares");
+  cmd->add_flag("--stacked", options->stacked,
+                "Draw every chart on its own rectangle at the origin of the texture (charts on top of each other), "
+                "instead of packing them side by side into one texture");
+  cmd->add_option("--texture-size", options->texture_size,
+                  "Width and height in texels of the texture the charts are packed into: the OBJ's texture "
+                  "coordinates keep the charts this many texels apart")
+      ->check(number_in(16, 65536))
+      ->capture_default_str();
+  cmd->add_option("--gutter", options->gutter,
+                  "Texels kept free on each side of a packed chart, so that filtering does not mix two charts")
+      ->check(number_in(0, 256))
+      ->capture_default_str();
   cmd->add_option("--outputs", options->outputs,
                   "What to write, a comma-separated list of: obj (the OBJ with its .mtl and checker texture), uv (the "
                   "uv table), patches (the label file), picture (the PNG)")
@@ -233,7 +282,8 @@ void add_param_command(CLI::App& app)
   cmd->add_option("--runs", options->runs, "Run the parameterization N times and report the median time")
       ->check(number_in(1, 1000))
       ->capture_default_str();
-  cmd->footer(std::string("Writes, unless --outputs says otherwise, OUTPUT/<mesh>.obj (v in input order, one vt per distinct (vertex, uv)), "
+  cmd->footer(std::string("Writes, unless --outputs says otherwise, OUTPUT/<mesh>.obj (v in input order, one vt per distinct (vertex, uv), "
+              "the charts packed side by side into one texture of --texture-size texels unless --stacked or --unit-squares), "
               "OUTPUT/<mesh>.uv.csv (vertex,patch,u,v), OUTPUT/<mesh>.mtl and <mesh>.checker.png (the OBJ's material "
               "and texture), OUTPUT/<mesh>.png (the mesh with its patches and u, v isolines) and "
               "OUTPUT/<mesh>.patches.txt (the patch of each face of the mesh file, one per "

@@ -39,6 +39,9 @@ struct Param_options {
   int isolines = 10;
   bool svg = false;
   bool unit_squares = false; // write each chart on the unit square, not on its own rectangle
+  bool stacked = false;      // each chart at the texture's origin, not packed into one texture
+  int texture_size = 1024;   // the packed texture's width and height, in texels
+  int gutter = 2;            // texels kept free around each packed chart
   std::string color = "patches";
   bool render_only = false; // diffuv render: the picture only
   std::size_t threads = 0;   // 0: every core (with oneTBB)

@@ -69,9 +69,10 @@ void print_summary(const Param_run& run, const Param_options& options)
   if(in.report.polygons_triangulated > 0)
     std::cout << " (" << count_text(in.report.polygons_triangulated, "polygon") << " triangulated)";
   if(in.report.degenerate_faces > 0) std::cout << ", " << count_text(in.report.degenerate_faces, "zero-area face");
-  if(in.report.isolated_vertices > 0)
-    std::cout << ", " << count_text(in.report.isolated_vertices, "isolated vertex", "isolated vertices")
-              << " (in no face: no (u,v))";
+  // Points merged on reading are told on the repaired line: these are the file's own.
+  const std::size_t isolated = in.report.isolated_vertices - in.report.repair.points_merged;
+  if(isolated > 0)
+    std::cout << ", " << count_text(isolated, "isolated vertex", "isolated vertices") << " (in no face: no (u,v))";
   std::cout << '\n';
   if(const std::string repaired = repair_line(in); !repaired.empty()) std::cout << repaired << '\n';
   if(!options.corners.empty()) {
@@ -142,6 +143,7 @@ void print_param_report(const Param_run& run, const Param_options& options)
   std::cout << "time: " << Stage_clock::duration(run.total_ms) << " to make and map the patches (median of "
             << count_text(static_cast<std::size_t>(options.runs), "run") << "); the patches' own times (column time_ms) add up to "
             << Stage_clock::duration(patch_ms) << (options.threads == 1 ? "" : " over all threads") << '\n';
+  if(!run.atlas_line.empty()) std::cout << run.atlas_line << '\n';
   std::cout << "stages: " << run.stages.summary() << '\n';
   std::cout << "wrote";
   for(const auto& p : run.written) std::cout << ' ' << p;

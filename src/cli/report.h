@@ -21,6 +21,7 @@ struct Param_run {
   const Stage_clock& stages;
   const std::vector<std::string>& written;     ///< the files written
   bool measured = true;                        ///< false: --no-measure, `measures` are empty
+  std::string atlas_line = {};                 ///< how the charts were packed, or empty
 };
 
 /// Prints the summary and the table on stdout, the warnings on stderr.

@@ -188,7 +188,7 @@ inline const char* format_name(Mesh_format format)
 ///   - "face J has vertex index X, out of range (the file has N vertices)"
 ///   - "face J has only K vertices"
 ///   - with `options.repair`: "the surface is not orientable (like a Moebius
-///     strip): faces J and K meet at the edge between vertices I and L ...",
+///     strip): faces J and K disagree on the direction of the edge between vertices I and L, ...",
 ///     "non-manifold edge or vertex left after repair (...)", "the file has
 ///     no face that uses three distinct points"
 ///   - without: "face J uses vertex I twice", "non-manifold edge or vertex, or

@@ -420,39 +420,103 @@ Soup_repair_map repair_polygon_soup_as(const std::string& path, std::vector<Poin
       }
     });
     std::vector<char> seen(kept.size(), 0);
+    // The walk's tree: the face each face was reached from, and the corner
+    // of that face whose edge it crossed (to name a Moebius strip's seam).
+    std::vector<Index> parent(kept.size(), no_index<Index>);
+    std::vector<std::size_t> parent_corner(kept.size(), 0);
     std::vector<std::size_t> members, stack;
+    const auto refuse_moebius = [&](std::size_t p, std::size_t c, std::size_t q) {
+      // The walk closed a cycle of faces (p's path up the tree, q's, and the
+      // edge between them) around which no orientation agrees. Name an edge
+      // of it across which the file's own faces disagree: one exists (their
+      // number is odd), and it is where the user can see the twist.
+      std::vector<char> on_path(kept.size(), 0);
+      for(std::size_t f = p;; f = parent[f]) {
+        on_path[f] = 1;
+        if(parent[f] == no_index<Index>) break;
+      }
+      std::vector<std::size_t> cycle = {corner_of[p] + c}; // corners whose edges make the cycle
+      std::size_t common = q;                                // q's path up to p's
+      while(!on_path[common]) {
+        cycle.push_back(parent_corner[common]);
+        common = parent[common];
+      }
+      for(std::size_t f = p; f != common; f = parent[f]) cycle.push_back(parent_corner[f]);
+      std::size_t named = cycle.front();
+      for(std::size_t corner : cycle)
+        if(links[corner].flip) {
+          named = corner;
+          break;
+        }
+      const std::size_t face = static_cast<std::size_t>(
+          std::upper_bound(corner_of.begin(), corner_of.end(), named) - corner_of.begin() - 1);
+      const std::size_t k = named - corner_of[face], n = kept[face].size();
+      const std::size_t f = map.file_polygon[face], g = map.file_polygon[links[named].face];
+      const std::size_t a = kept[face][k], b = kept[face][k + 1 < n ? k + 1 : 0];
+      throw Input_error(path, locate.face_line((std::max)(f, g)),
+                        "the surface is not orientable (like a Moebius strip): faces " +
+                            std::to_string((std::min)(f, g)) + " and " + std::to_string((std::max)(f, g)) +
+                            " disagree on the direction of the edge between vertices " +
+                            std::to_string((std::min)(a, b)) + " and " + std::to_string((std::max)(a, b)) +
+                            ", and no choice of orientations makes every face agree with its neighbours");
+    };
+    const auto coordinates = [&](std::size_t i) {
+      return std::array<double, 3>{CGAL::to_double(points[i].x()), CGAL::to_double(points[i].y()),
+                                   CGAL::to_double(points[i].z())};
+    };
     for(std::size_t start = 0; start < kept.size(); ++start) {
       if(seen[start]) continue;
       members.clear();
       seen[start] = 1;
       stack.push_back(start);
+      bool closed = true;
       while(!stack.empty()) {
         const std::size_t p = stack.back();
         stack.pop_back();
         members.push_back(p);
         for(std::size_t c = 0, n = kept[p].size(); c < n; ++c) {
           const Link& link = links[corner_of[p] + c];
-          if(link.face == no_index<Index>) continue;
+          if(link.face == no_index<Index>) {
+            closed = false; // a border edge, or an edge of three faces or more
+            continue;
+          }
           const char wanted = static_cast<char>(turned[p] ^ (link.flip ? 1 : 0));
           if(!seen[link.face]) {
             seen[link.face] = 1;
             turned[link.face] = wanted;
+            parent[link.face] = static_cast<Index>(p);
+            parent_corner[link.face] = corner_of[p] + c;
             stack.push_back(link.face);
           } else if(turned[link.face] != wanted) {
-            const std::size_t f = map.file_polygon[p], g = map.file_polygon[link.face];
-            const std::size_t a = kept[p][c], b = kept[p][c + 1 < n ? c + 1 : 0];
-            throw Input_error(path, locate.face_line((std::max)(f, g)),
-                              "the surface is not orientable (like a Moebius strip): faces " +
-                                  std::to_string((std::min)(f, g)) + " and " + std::to_string((std::max)(f, g)) +
-                                  " meet at the edge between vertices " + std::to_string((std::min)(a, b)) + " and " +
-                                  std::to_string((std::max)(a, b)) +
-                                  " and no orientation of the faces makes them agree there");
+            refuse_moebius(p, c, link.face);
           }
         }
       }
-      std::size_t turned_here = 0;
-      for(std::size_t p : members) turned_here += turned[p] ? 1 : 0;
-      if(2 * turned_here > members.size())
+      // Which way the component faces: a closed one outwards (its signed
+      // volume positive), an open one as most of its faces did in the file.
+      bool turn_all = false;
+      double volume = 0.;
+      if(closed) {
+        for(std::size_t p : members) {
+          const auto& polygon = kept[p];
+          const std::array<double, 3> o = coordinates(polygon[0]);
+          double six_volume = 0.;
+          for(std::size_t k = 1; k + 1 < polygon.size(); ++k) {
+            const std::array<double, 3> a = coordinates(polygon[k]), b = coordinates(polygon[k + 1]);
+            six_volume += o[0] * (a[1] * b[2] - a[2] * b[1]) - o[1] * (a[0] * b[2] - a[2] * b[0]) +
+                          o[2] * (a[0] * b[1] - a[1] * b[0]);
+          }
+          volume += turned[p] ? -six_volume : six_volume;
+        }
+      }
+      if(closed && volume != 0.) {
+        turn_all = volume < 0.;
+      } else {
+        std::size_t turned_here = 0;
+        for(std::size_t p : members) turned_here += turned[p] ? 1 : 0;
+        turn_all = 2 * turned_here > members.size();
+      }
+      if(turn_all)
         for(std::size_t p : members) turned[p] = !turned[p];
     }
     for(std::size_t p = 0; p < kept.size(); ++p)

@@ -1,0 +1,200 @@
+// Tests of pack_charts() (render/pack_charts.h): the charts of an atlas packed
+// into one texture, checked by rasterising the packed triangles.
+#include "test_data.h"
+
+#include <diffuv/render/pack_charts.h>
+#include <diffuv/layout/disc_patches.h>
+#include <diffuv/parameterization/parameterize_patches.h>
+
+#include <CGAL/Polygon_mesh_processing/measure.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <vector>
+
+namespace {
+
+using namespace diffuv_test;
+using Atlas = diffuv::Uv_atlas<Mesh>;
+using Point_2 = Atlas::Point_2;
+
+// cow's (or another mesh's) default patches, mapped.
+struct Mapped {
+  std::unique_ptr<Atlas> atlas;
+  std::vector<diffuv::Patch_result<Mesh>> results;
+};
+
+Mapped map_default(const Mesh& m)
+{
+  Mapped out;
+  diffuv::Segmentation<Mesh> seg;
+  EXPECT_TRUE(diffuv::disc_patches(m, m.points(), {}, seg).ok());
+  out.atlas = std::make_unique<Atlas>(m);
+  out.results = diffuv::parameterize_patches(m, m.points(), seg, *out.atlas);
+  return out;
+}
+
+// For each texel centre, how many charts' packed triangles contain it (each
+// chart counted once): the texture as a renderer would sample it.
+std::vector<int> charts_per_texel(const Atlas& atlas, const diffuv::Chart_packing& packing)
+{
+  const int r = packing.resolution;
+  std::vector<int> count(static_cast<std::size_t>(r) * r, 0);
+  std::vector<int> last_chart(count.size(), -1);
+  const Mesh& m = atlas.mesh();
+  const auto corner = diffuv::packed_corner_map(atlas, packing);
+  for(std::size_t c = 0; c < atlas.number_of_charts(); ++c)
+    for(auto f : atlas.chart(c).faces) {
+      std::array<Point_2, 3> t;
+      std::size_t k = 0;
+      for(auto h : CGAL::halfedges_around_face(m.halfedge(f), m)) t[k++] = get(corner, h);
+      const auto edge = [](const Point_2& a, const Point_2& b, double x, double y) {
+        return (b.x() - a.x()) * (y - a.y()) - (b.y() - a.y()) * (x - a.x());
+      };
+      const double area = edge(t[0], t[1], t[2].x(), t[2].y());
+      if(area == 0.) continue;
+      const double x0 = std::min({t[0].x(), t[1].x(), t[2].x()}) * r, x1 = std::max({t[0].x(), t[1].x(), t[2].x()}) * r;
+      const double y0 = std::min({t[0].y(), t[1].y(), t[2].y()}) * r, y1 = std::max({t[0].y(), t[1].y(), t[2].y()}) * r;
+      for(int j = std::max(0, int(std::floor(y0 - 0.5))); j <= std::min(r - 1, int(std::ceil(y1))); ++j)
+        for(int i = std::max(0, int(std::floor(x0 - 0.5))); i <= std::min(r - 1, int(std::ceil(x1))); ++i) {
+          const double x = (i + 0.5) / r, y = (j + 0.5) / r;
+          const double e0 = edge(t[0], t[1], x, y), e1 = edge(t[1], t[2], x, y), e2 = edge(t[2], t[0], x, y);
+          const bool inside = area > 0 ? (e0 >= 0 && e1 >= 0 && e2 >= 0) : (e0 <= 0 && e1 <= 0 && e2 <= 0);
+          const std::size_t at = static_cast<std::size_t>(j) * r + i;
+          if(inside && last_chart[at] != int(c)) {
+            ++count[at];
+            last_chart[at] = int(c);
+          }
+        }
+    }
+  return count;
+}
+
+// cow's charts at 512 x 512: every packed point inside its chart's slot and
+// inside the texture, no texel sampled by two charts, the covered share as
+// counted by rasterising equal to the reported coverage, one texel density.
+TEST(PackCharts, CowChartsShareOneTextureWithoutOverlap)
+{
+  const Mesh& cow = cgal_mesh("cow.off");
+  const Mapped mapped = map_default(cow);
+  const Atlas& atlas = *mapped.atlas;
+  ASSERT_GT(atlas.number_of_charts(), 10u);
+  diffuv::Chart_packing_options options;
+  options.resolution = 512;
+  options.gutter = 2;
+  const diffuv::Chart_packing packing = diffuv::pack_charts(atlas, cow.points(), options);
+  ASSERT_EQ(packing.charts.size(), atlas.number_of_charts());
+  EXPECT_GT(packing.texels_per_unit, 0.);
+
+  // Slots inside the texture, pairwise apart.
+  for(std::size_t a = 0; a < packing.charts.size(); ++a) {
+    const auto& p = packing.charts[a];
+    ASSERT_GT(p.width, 2 * options.gutter);
+    EXPECT_GE(p.x, 0);
+    EXPECT_GE(p.y, 0);
+    EXPECT_LE(p.x + p.width, options.resolution);
+    EXPECT_LE(p.y + p.height, options.resolution);
+    for(std::size_t b = a + 1; b < packing.charts.size(); ++b) {
+      const auto& q = packing.charts[b];
+      const bool apart = p.x + p.width <= q.x || q.x + q.width <= p.x || p.y + p.height <= q.y || q.y + q.height <= p.y;
+      EXPECT_TRUE(apart) << "charts " << a << " and " << b;
+    }
+  }
+  // Each chart's points inside its slot, a gutter away from the slot's edges.
+  const auto corner = diffuv::packed_corner_map(atlas, packing);
+  const double r = options.resolution, g = options.gutter;
+  for(std::size_t c = 0; c < atlas.number_of_charts(); ++c) {
+    const auto& p = packing.charts[c];
+    double chart_area = 0.;
+    for(auto f : atlas.chart(c).faces) {
+      chart_area += CGAL::Polygon_mesh_processing::face_area(f, cow);
+      for(auto h : CGAL::halfedges_around_face(cow.halfedge(f), cow)) {
+        const Point_2 t = get(corner, h);
+        ASSERT_GE(t.x() * r, p.x + g - 1e-9) << "chart " << c;
+        ASSERT_LE(t.x() * r, p.x + p.width - g + 1e-9) << "chart " << c;
+        ASSERT_GE(t.y() * r, p.y + g - 1e-9) << "chart " << c;
+        ASSERT_LE(t.y() * r, p.y + p.height - g + 1e-9) << "chart " << c;
+      }
+    }
+    // One density: the chart's rectangle in texels has the patch's area times density squared.
+    EXPECT_NEAR(p.extent_u * p.extent_v, chart_area * packing.texels_per_unit * packing.texels_per_unit,
+                1e-6 * p.extent_u * p.extent_v)
+        << "chart " << c;
+    EXPECT_EQ(p.rotated, atlas.chart(c).size[1] > atlas.chart(c).size[0]) << "chart " << c;
+  }
+  const std::vector<int> count = charts_per_texel(atlas, packing);
+  EXPECT_EQ(*std::max_element(count.begin(), count.end()), 1) << "a texel sampled by two charts";
+  const double covered =
+      double(std::count(count.begin(), count.end(), 1)) / double(count.size());
+  // The diffusion map covers its rectangle: rasterised and reported agree
+  // up to the texels cut by the rectangles' edges.
+  EXPECT_NEAR(covered, packing.coverage, 0.05) << "rasterised " << covered << ", reported " << packing.coverage;
+  EXPECT_GT(packing.coverage, 0.5);
+}
+
+// Packed coordinates keep each triangle's orientation (a turned chart is
+// turned, not mirrored) and its shape up to one scale: the same L2 stretch
+// as on the chart's rectangle.
+TEST(PackCharts, TurningKeepsOrientationAndShape)
+{
+  const Mesh& cow = cgal_mesh("cow.off");
+  const Mapped mapped = map_default(cow);
+  const Atlas& atlas = *mapped.atlas;
+  const diffuv::Chart_packing packing = diffuv::pack_charts(atlas, cow.points());
+  const auto packed = diffuv::packed_corner_map(atlas, packing);
+  const auto rectangle = atlas.corner_texture_map();
+  std::size_t turned = 0;
+  for(std::size_t c = 0; c < atlas.number_of_charts(); ++c) {
+    turned += packing.charts[c].rotated;
+    const auto& size = atlas.chart(c).size;
+    const double scale = packing.charts[c].extent_u / size[0]; // texels per unit of the rectangle
+    EXPECT_NEAR(packing.charts[c].extent_v / size[1], scale, 1e-9 * scale);
+    for(auto f : atlas.chart(c).faces) {
+      std::array<Point_2, 3> a, b;
+      std::size_t k = 0;
+      for(auto h : CGAL::halfedges_around_face(cow.halfedge(f), cow)) {
+        a[k] = get(rectangle, h);
+        b[k++] = get(packed, h);
+      }
+      const double area_a = CGAL::area(a[0], a[1], a[2]);
+      const double area_b = CGAL::area(b[0], b[1], b[2]) * packing.resolution * packing.resolution;
+      EXPECT_NEAR(area_b, area_a * scale * scale, 1e-6 * std::abs(area_a) * scale * scale + 1e-12) << "chart " << c;
+      // Lengths scale by one factor: a similarity.
+      for(int e = 0; e < 3; ++e) {
+        const double la = std::sqrt(CGAL::squared_distance(a[e], a[(e + 1) % 3]));
+        const double lb = std::sqrt(CGAL::squared_distance(b[e], b[(e + 1) % 3])) * packing.resolution;
+        EXPECT_NEAR(lb, la * scale, 1e-6 * la * scale + 1e-9);
+      }
+    }
+  }
+  EXPECT_GT(turned, 0u) << "cow has charts taller than wide";
+}
+
+// A larger texture gives a larger density, the same gutters a larger share;
+// a resolution the gutters alone fill is refused with a message.
+TEST(PackCharts, ResolutionAndGutter)
+{
+  const Mesh& cow = cgal_mesh("cow.off");
+  const Mapped mapped = map_default(cow);
+  diffuv::Chart_packing_options small, large, wide_gutter;
+  small.resolution = 256;
+  large.resolution = 2048;
+  wide_gutter.resolution = 256;
+  wide_gutter.gutter = 6;
+  const auto a = diffuv::pack_charts(*mapped.atlas, cow.points(), small);
+  const auto b = diffuv::pack_charts(*mapped.atlas, cow.points(), large);
+  const auto c = diffuv::pack_charts(*mapped.atlas, cow.points(), wide_gutter);
+  EXPECT_GT(b.texels_per_unit, 6 * a.texels_per_unit);
+  EXPECT_GT(b.coverage, a.coverage);
+  EXPECT_LT(c.coverage, a.coverage);
+  diffuv::Chart_packing_options tiny;
+  tiny.resolution = 16;
+  EXPECT_THROW(diffuv::pack_charts(*mapped.atlas, cow.points(), tiny), std::invalid_argument);
+  tiny.resolution = 0;
+  EXPECT_THROW(diffuv::pack_charts(*mapped.atlas, cow.points(), tiny), std::invalid_argument);
+}
+
+} // namespace
