@@ -8,8 +8,9 @@
 //
 //   rectangle of the patch's aspect, scaled so that its area is the patch's
 //     3D area (one texel density on every chart)
-//   -> turned by 90 degrees when taller than wide (a skyline packer fills
-//      its rows best with landscape rectangles)
+//   -> turned by 90 degrees so that all lie wide, or all stand tall, or
+//      none turned: whichever packs densest (stb's skyline fills its rows
+//      differently with each)
 //   -> a gutter of texels around it (bilinear filtering and mipmaps must not
 //      mix two charts' texels)
 //   -> the largest density at which every chart fits, by bisection over
@@ -57,7 +58,9 @@ namespace diffuv {
 struct Chart_packing_options {
   int resolution = 1024; ///< the texture's width and height in texels
   int gutter = 2;        ///< texels kept free on each side of a chart
-  bool rotate = true;    ///< turn charts taller than wide by 90 degrees
+  /// Try the charts turned by 90 degrees to lie all wide and all tall as
+  /// well as unturned, and keep whichever packs densest.
+  bool rotate = true;
 };
 
 /// One chart's place in the texture. Texels are counted from the lower left
@@ -153,7 +156,6 @@ Chart_packing pack_charts(const Uv_atlas<TriangleMesh, Kernel>& atlas, VertexPoi
     if(!(area > 0.) || !(aspect_area > 0.) || !std::isfinite(area)) continue;
     const double k = std::sqrt(area / aspect_area);
     extent[c] = {chart.size[0] * k, chart.size[1] * k};
-    packing.charts[c].rotated = options.rotate && extent[c][1] > extent[c][0];
     total_area += area;
     longest = (std::max)(longest, (std::max)(extent[c][0], extent[c][1]));
     placed.push_back(c);
@@ -161,17 +163,25 @@ Chart_packing pack_charts(const Uv_atlas<TriangleMesh, Kernel>& atlas, VertexPoi
   if(placed.empty()) return packing;
 
   const int g = options.gutter;
+  // Which charts are turned: none, the tall ones (all lie wide) or the wide
+  // ones (all stand tall). Sorted by height, stb's skyline fills its rows
+  // differently with each; which packs best depends on the charts.
+  std::vector<char> turned(n, 0);
+  const auto turn = [&](int policy) {
+    for(std::size_t c : placed)
+      turned[c] = policy == 1 ? extent[c][1] > extent[c][0] : policy == 2 ? extent[c][0] > extent[c][1] : false;
+  };
   const auto slot_sizes = [&](double s) {
     std::vector<std::array<int, 2>> sizes;
     sizes.reserve(placed.size());
     for(std::size_t c : placed) {
       const int w = static_cast<int>(std::ceil(s * extent[c][0])) + 2 * g;
       const int h = static_cast<int>(std::ceil(s * extent[c][1])) + 2 * g;
-      sizes.push_back(packing.charts[c].rotated ? std::array<int, 2>{h, w} : std::array<int, 2>{w, h});
+      sizes.push_back(turned[c] ? std::array<int, 2>{h, w} : std::array<int, 2>{w, h});
     }
     return sizes;
   };
-  std::vector<std::array<int, 2>> at, best_at;
+  std::vector<std::array<int, 2>> at;
   const auto fits = [&](double s) {
     const auto sizes = slot_sizes(s);
     for(const auto& size : sizes)
@@ -180,31 +190,45 @@ Chart_packing pack_charts(const Uv_atlas<TriangleMesh, Kernel>& atlas, VertexPoi
   };
   // No density packs more area than the texture holds, nor a chart wider than it.
   const double r = options.resolution;
-  double high = (std::min)(r / std::sqrt(total_area), r / longest) * (1. + 1e-9);
+  const double bound = (std::min)(r / std::sqrt(total_area), r / longest) * (1. + 1e-9);
   double low = 0.;
-  if(fits(high)) {
-    low = high;
-    best_at = at;
-  } else {
-    for(int step = 0; step < 40 && high - low > 1e-4 * high; ++step) {
-      const double mid = 0.5 * (low + high);
-      if(fits(mid)) {
-        low = mid;
-        best_at = at;
-      } else {
-        high = mid;
+  std::vector<std::array<int, 2>> best_at;
+  std::vector<char> best_turned;
+  for(int policy = 0; policy < (options.rotate ? 3 : 1); ++policy) {
+    turn(policy);
+    double lo = 0., hi = bound;
+    std::vector<std::array<int, 2>> found;
+    if(fits(hi)) {
+      lo = hi;
+      found = at;
+    } else {
+      for(int step = 0; step < 40 && hi - lo > 1e-4 * hi; ++step) {
+        const double mid = 0.5 * (lo + hi);
+        if(fits(mid)) {
+          lo = mid;
+          found = at;
+        } else {
+          hi = mid;
+        }
       }
+    }
+    if(!found.empty() && (best_at.empty() || lo > low)) {
+      low = lo;
+      best_at = std::move(found);
+      best_turned = turned;
     }
   }
   if(best_at.empty()) // the gutters alone do not fit
     throw std::invalid_argument("pack_charts: the charts do not fit in the texture with their gutters: raise the "
                                 "resolution or narrow the gutter");
+  turned = best_turned;
   const double s = low;
   packing.texels_per_unit = s;
   const auto sizes = slot_sizes(s);
   double covered = 0.;
   for(std::size_t k = 0; k < placed.size(); ++k) {
     Packed_chart& p = packing.charts[placed[k]];
+    p.rotated = turned[placed[k]] != 0;
     p.x = best_at[k][0];
     p.y = best_at[k][1];
     p.width = sizes[k][0];
