@@ -4,6 +4,8 @@
 // read back, the fan split it is made of, and the judge that refines it.
 #include "test_layout_data.h"
 
+#include <CGAL/Polygon_mesh_processing/orientation.h>
+
 TEST(QuadLayout, CowIsAConformingLayoutOfQuads)
 {
   const Mesh& cow = cgal_mesh("cow.off");
@@ -51,6 +53,45 @@ TEST(QuadLayout, SameLayoutForShuffledVerticesAndFaces)
     for(std::size_t k = 0; k < 4; ++k)
       EXPECT_EQ(s.vperm[(*a.corners(p))[k].idx()], (*b.corners(p))[k].idx()) << "patch " << p << " corner " << k;
   }
+}
+
+TEST(QuadLayout, SameLayoutWithEveryFaceTurned)
+{
+  // The layout depends on the surface, not on which way its faces turn: a
+  // copy with every face turned gets the same patches with the same corners
+  // (the fans' cuts were traced in the targets' counter-clockwise order,
+  // which runs backwards on the turned copy: cow's atlas had L2 5.4 there
+  // instead of 1.6). Judged as the tool judges them, so the refinement
+  // rounds are compared too.
+  const Mesh& cow = cgal_mesh("cow.off");
+  Mesh turned = cow;
+  CGAL::Polygon_mesh_processing::reverse_face_orientations(turned);
+  auto judged_layout = [](const Mesh& m) {
+    Seg seg;
+    EXPECT_TRUE(diffuv::disc_patches(m, m.points(), {}, seg, diffuv::Patching_options(), nullptr,
+                                     diffuv::Raw_map_judge<Mesh, decltype(m.points())>(m, m.points()))
+                    .ok());
+    return seg;
+  };
+  const Seg a = judged_layout(cow), b = judged_layout(turned);
+  ASSERT_EQ(a.number_of_patches(), b.number_of_patches());
+  std::map<std::size_t, std::size_t> same;  // patch of a -> patch of b
+  for(auto f : faces(cow)) {
+    const auto [it, inserted] = same.emplace(a.face_patch[f.idx()], b.face_patch[f.idx()]);
+    ASSERT_EQ(it->second, b.face_patch[f.idx()]) << "face " << f << " lies in another patch on the turned copy";
+  }
+  std::size_t quads = 0;
+  for(const auto& [p, q] : same) {
+    ASSERT_EQ(a.corners(p) == nullptr, b.corners(q) == nullptr) << "patch " << p;
+    if(!a.corners(p)) continue;
+    ++quads;
+    const std::set<std::size_t> corners_a{(*a.corners(p))[0].idx(), (*a.corners(p))[1].idx(), (*a.corners(p))[2].idx(),
+                                          (*a.corners(p))[3].idx()};
+    const std::set<std::size_t> corners_b{(*b.corners(q))[0].idx(), (*b.corners(q))[1].idx(), (*b.corners(q))[2].idx(),
+                                          (*b.corners(q))[3].idx()};
+    EXPECT_EQ(corners_a, corners_b) << "patch " << p;
+  }
+  EXPECT_GE(3 * quads, 2 * a.number_of_patches());
 }
 
 TEST(QuadLayout, LabelledRegionsAreSplitWithinTheirBorders)

@@ -184,7 +184,17 @@ Fan_failure fan_split(const Local_region<TriangleMesh>& r, const std::vector<int
       if(r.on_border[i])
         for(int j : r.neighbours[i]) crowded[j] = 1;
     cuts.assign(k, {});
+    // Shortest cut first (in the flattening), so that the order, and so the
+    // fan, is the same on a copy with its faces turned the other way round
+    // (the targets' counter-clockwise order runs backwards there).
+    std::vector<std::size_t> trace_order(k);
+    std::vector<double> reach(k);
     for(std::size_t a = 0; a < k; ++a) {
+      trace_order[a] = a;
+      reach[a] = std::hypot(X[targets[a]] - X[zc], Y[targets[a]] - Y[zc]);
+    }
+    std::stable_sort(trace_order.begin(), trace_order.end(), [&](std::size_t a, std::size_t b) { return reach[a] < reach[b]; });
+    for(std::size_t a : trace_order) {
       const int target = targets[a];
       const double sx = X[target] - X[zc], sy = Y[target] - Y[zc];
       const double squared_length = sx * sx + sy * sy;

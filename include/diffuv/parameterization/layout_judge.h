@@ -56,6 +56,26 @@ struct Fallback_corner_options {
 
 namespace internal {
 
+// A score rounded to 9 significant digits (on a log scale), so that two
+// copies of a patch whose sums ran in another order (faces turned, shuffled)
+// see the same ties.
+inline double rounded_score(double x)
+{
+  if(!(x > 0) || !std::isfinite(x)) return x;
+  return std::round(std::log(x) * 1e9);
+}
+
+// Four corners' points in increasing order: a key for a choice of corners
+// that does not depend on where the boundary loop starts or which way it runs.
+template <class VertexPointMap, class Corners>
+auto sorted_corner_points(VertexPointMap vpm, const Corners& corners)
+{
+  std::array<typename boost::property_traits<VertexPointMap>::value_type, 4> points;
+  for(std::size_t k = 0; k < 4; ++k) points[k] = get(vpm, corners[k]);
+  std::sort(points.begin(), points.end());
+  return points;
+}
+
 // A quick estimate of the L2 stretch that each choice of four corners among
 // `pool` (increasing positions in `loop`, a patch's boundary loop) gives the
 // raw map of the patch `faces`. The pool cuts the loop into arcs, and a
@@ -249,8 +269,14 @@ std::size_t choose_fallback_corners(const TriangleMesh& tm, VertexPointMap vpm, 
     std::vector<std::size_t> order(m);
     std::iota(order.begin(), order.end(), 0);
     auto junction = [&](std::size_t k) { return loop.neighbour[(k + m - 1) % m] != loop.neighbour[k]; };
+    // Ties (equal angles, to rounding) go to the vertex with the smaller
+    // point, not the earlier one along the loop: the loop runs backwards on a
+    // copy with its faces turned, and starts elsewhere on a shuffled one.
     std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-      return std::make_tuple(!junction(a), angle[a], a) < std::make_tuple(!junction(b), angle[b], b);
+      const double qa = internal::rounded_score(angle[a]), qb = internal::rounded_score(angle[b]);
+      if(junction(a) != junction(b)) return junction(a);
+      if(qa != qb) return qa < qb;
+      return get(vpm, loop.vertices[a]) < get(vpm, loop.vertices[b]);
     });
     order.resize(std::min(order.size(), options.pool));
     std::sort(order.begin(), order.end());  // loop order: counter-clockwise
@@ -261,12 +287,22 @@ std::size_t choose_fallback_corners(const TriangleMesh& tm, VertexPointMap vpm, 
         for(std::size_t c = b + 1; c < k; ++c)
           for(std::size_t d = c + 1; d < k; ++d) in_pool.push_back({a, b, c, d});
     if(seg.patch_faces[fallback[i]].size() >= options.estimate_from_faces && in_pool.size() > options.mapped_candidates) {
-      // A large patch: map only the choices estimated best (ties: the first listed).
+      // A large patch: map only the choices estimated best (ties: the choice
+      // of the smaller corner points).
       const std::vector<double> estimate =
           internal::estimate_corner_choices(tm, vpm, seg.patch_faces[fallback[i]], loop.vertices, order, in_pool);
-        std::vector<std::size_t> rank(in_pool.size());
+      auto points_of = [&](const std::array<std::size_t, 4>& q) {
+        return internal::sorted_corner_points(vpm, Corners{loop.vertices[order[q[0]]], loop.vertices[order[q[1]]],
+                                                           loop.vertices[order[q[2]]], loop.vertices[order[q[3]]]});
+      };
+      std::vector<std::size_t> rank(in_pool.size());
       std::iota(rank.begin(), rank.end(), 0);
-      std::stable_sort(rank.begin(), rank.end(), [&](std::size_t a, std::size_t b) { return estimate[a] < estimate[b]; });
+      std::vector<double> rounded(in_pool.size());
+      for(std::size_t c = 0; c < in_pool.size(); ++c) rounded[c] = internal::rounded_score(estimate[c]);
+      std::sort(rank.begin(), rank.end(), [&](std::size_t a, std::size_t b) {
+        if(rounded[a] != rounded[b]) return rounded[a] < rounded[b];
+        return points_of(in_pool[a]) < points_of(in_pool[b]);
+      });
       std::vector<std::array<std::size_t, 4>> kept;
       for(std::size_t r = 0; r < options.mapped_candidates; ++r) kept.push_back(in_pool[rank[r]]);
       in_pool = std::move(kept);
@@ -296,7 +332,13 @@ std::size_t choose_fallback_corners(const TriangleMesh& tm, VertexPointMap vpm, 
     const auto scored = score(patches, corners);
     for(std::size_t t = 0; t < patches.size(); ++t) {
       const std::size_t i = which[t];
-      if(scored[t] < by_rule_score[i] * (1. - options.min_gain) && scored[t] < best[i]) {
+      // Equal scores (to rounding): the choice of the smaller corner points,
+      // whatever order the candidates came in.
+      const double mine = internal::rounded_score(scored[t]), kept = internal::rounded_score(best[i]);
+      const bool better = mine < kept || (mine == kept && best_corners[i][0] != boost::graph_traits<TriangleMesh>::null_vertex() &&
+                                          internal::sorted_corner_points(vpm, corners[t]) <
+                                              internal::sorted_corner_points(vpm, best_corners[i]));
+      if(scored[t] < by_rule_score[i] * (1. - options.min_gain) && better) {
         best[i] = scored[t];
         best_corners[i] = corners[t];
       }

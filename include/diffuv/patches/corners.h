@@ -287,6 +287,13 @@ std::size_t separate_flat_triangles(const FaceGraph& g,
     for(std::size_t i = a; i != b; i = (i + 1) % n) sum += edge_lengths[i];
     return sum;
   };
+  // A placement's vertices in increasing order: the last tie-break, the same
+  // whichever way the loop runs and wherever it starts.
+  auto sorted_vertices = [&](const std::array<std::size_t, 4>& c) {
+    std::array<vertex_descriptor, 4> v{loop[c[0]], loop[c[1]], loop[c[2]], loop[c[3]]};
+    std::sort(v.begin(), v.end());
+    return v;
+  };
   const std::array<std::size_t, 4> start = corners;
   std::size_t moves = 0;
   std::size_t flat = count_flat(corners);
@@ -303,14 +310,23 @@ std::size_t separate_flat_triangles(const FaceGraph& g,
       std::vector<std::size_t> offset;
       for(std::size_t i : t) offset.push_back((i + n - corners[s]) % n);
       std::sort(offset.begin(), offset.end());
-      const std::size_t middle = (corners[s] + offset[offset.size() / 2]) % n;  // strictly inside the side
+      // The set's middle; of an even set, either of its two middles (taking
+      // the upper one alone would depend on which way the loop runs).
+      // (Strictly inside the side: the offsets are distinct, the set has three or more.)
+      const std::size_t middles = offset.size() % 2 == 0 ? 2 : 1;
+      for(std::size_t k = 0; k < middles; ++k)
       for(std::size_t c : {s, (s + 1) % 4}) {
+        const std::size_t middle = (corners[s] + offset[(offset.size() - 1) / 2 + k]) % n;
         std::array<std::size_t, 4> candidate = corners;
         candidate[c] = middle;
         const std::size_t candidate_flat = count_flat(candidate);
         // The corner moves along side s: forwards from corners[s], backwards from corners[s+1].
         const double shift = c == s ? arc(corners[s], middle) : arc(middle, corners[c]);
-        if(candidate_flat < best_flat || (candidate_flat == best_flat && best_flat < flat && shift < best_shift)) {
+        // Equal shifts (to rounding: the sum runs the other way on a copy
+        // with its faces turned): the placement of the smaller vertices.
+        const bool same_shift = std::abs(shift - best_shift) <= 1e-12 * std::max(shift, best_shift);
+        const bool shorter = same_shift ? sorted_vertices(candidate) < sorted_vertices(best) : shift < best_shift;
+        if(candidate_flat < best_flat || (candidate_flat == best_flat && best_flat < flat && shorter)) {
           best_flat = candidate_flat;
           best_shift = shift;
           best = candidate;
@@ -347,8 +363,11 @@ std::size_t separate_flat_triangles(const FaceGraph& g,
     }
   }
   auto move_of = [&](std::size_t k, std::size_t x) { return ahead[k][x] <= behind[k][x] ? ahead[k][x] : -behind[k][x]; };
+  // Equal costs (to rounding): the placement of the smaller vertices.
+  double loop_length = 0;
+  for(double l : edge_lengths) loop_length += l;
   auto placement_key = [&](const std::array<std::size_t, 4>& c, double cost) {
-    return std::make_tuple(cost, move_of(0, c[0]), move_of(1, c[1]), move_of(2, c[2]), move_of(3, c[3]));
+    return std::make_pair(std::round(cost * 1e9 / std::max(loop_length, 1e-300)), sorted_vertices(c));
   };
   std::vector<std::pair<std::size_t, std::size_t>> arcs;  // open arcs (from, to) that need a corner
   for(const auto& t : border_sets)

@@ -178,7 +178,7 @@ bool flatten_region(const Local_region<TriangleMesh>& r, std::vector<double>& X,
   // increasing neighbour order), so the result does not depend on the order
   // the faces came in.
   std::vector<std::array<int, 3>> ordered = r.face_verts;
-  for(auto& fv : ordered) std::rotate(fv.begin(), std::min_element(fv.begin(), fv.end()), fv.end());
+  for(auto& fv : ordered) std::sort(fv.begin(), fv.end());  // a face's weights do not depend on its orientation
   std::sort(ordered.begin(), ordered.end());
   std::vector<std::map<int, double>> weight(nv);
   for(const auto& fv : ordered)
