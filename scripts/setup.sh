@@ -12,7 +12,8 @@ packages=(
   libtbb-dev                           # oneTBB: patches mapped in parallel
   libgtest-dev                         # tests
   libcli11-dev                         # the diffuv command line
-  libstb-dev                           # stb_image_write: PNG textures and renders
+  libstb-dev                           # stb_image_write and stb_rect_pack: PNG textures, renders, the packed atlas
+  libtinygltf-dev                      # glTF 2.0 files (the textured mesh for three.js, Blender, game engines)
   python3                              # scripts/height_labels.py, and XML checks in tests
   clang libclang-rt-dev                # libFuzzer targets (test/fuzz, scripts/fuzz.sh)
 )

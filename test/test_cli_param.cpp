@@ -5,11 +5,14 @@
 #include <diffuv/io/read_obj_charts.h>
 
 #include <gtest/gtest.h>
+#include <tiny_gltf.h>
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <set>
 #include <sstream>
 #include <string>
@@ -103,6 +106,51 @@ TEST_F(Tool, TheObjChartsArePackedIntoOneTexture)
   EXPECT_EQ(tight.code, 2) << tight.err;
   EXPECT_NE(tight.err.find("raise --texture-size or lower --gutter"), std::string::npos) << tight.err;
   EXPECT_FALSE(std::filesystem::exists(out_dir() / "tight"));
+}
+
+TEST_F(Tool, TheGlbFileHoldsTheObjsMeshTextureCoordinatesAndTexture)
+{
+  const Tool_run r = run("param " + data_path("meshes/cow.off") + " --outputs obj,glb -o " + out_dir().string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("cow.glb"), std::string::npos) << r.out;
+  tinygltf::TinyGLTF reader;
+  tinygltf::Model m;
+  std::string err, warn;
+  ASSERT_TRUE(reader.LoadBinaryFromFile(&m, &err, &warn, (out_dir() / "cow.glb").string())) << err;
+  const diffuv::Obj_charts obj = diffuv::read_obj_charts((out_dir() / "cow.obj").string());
+  ASSERT_EQ(m.meshes.size(), 1u);
+  ASSERT_EQ(m.meshes[0].primitives.size(), 1u);  // every face is in a chart
+  const auto& p = m.meshes[0].primitives[0];
+  // One glTF vertex per OBJ `vt` (both split a vertex per distinct uv), and
+  // the same triangles: each glTF corner has its OBJ corner's point and uv
+  // (v flipped: glTF's texture origin is the image's top left).
+  const tinygltf::Accessor& uv = m.accessors.at(p.attributes.at("TEXCOORD_0"));
+  const tinygltf::Accessor& xyz = m.accessors.at(p.attributes.at("POSITION"));
+  const tinygltf::Accessor& index = m.accessors.at(p.indices);
+  EXPECT_EQ(uv.count, obj.texcoords.size());
+  ASSERT_EQ(index.count, 3 * obj.triangles.size());
+  auto data = [&](const tinygltf::Accessor& a) {
+    const auto& view = m.bufferViews.at(a.bufferView);
+    return m.buffers.at(view.buffer).data.data() + view.byteOffset + a.byteOffset;
+  };
+  const auto* st = reinterpret_cast<const float*>(data(uv));
+  const auto* points = reinterpret_cast<const float*>(data(xyz));
+  const auto* corners = reinterpret_cast<const std::uint32_t*>(data(index));
+  for(std::size_t t = 0; t < obj.triangles.size(); ++t)
+    for(std::size_t k = 0; k < 3; ++k) {
+      const std::uint32_t i = corners[3 * t + k];
+      const auto& q = obj.texcoords[obj.triangle_uv[t][k]];
+      ASSERT_NEAR(st[2 * i], q[0], 1e-6) << "triangle " << t;
+      ASSERT_NEAR(st[2 * i + 1], 1. - q[1], 1e-6) << "triangle " << t;
+      for(std::size_t c = 0; c < 3; ++c) ASSERT_NEAR(points[3 * i + c], obj.positions[obj.triangles[t][k]][c], 1e-5);
+    }
+  ASSERT_EQ(m.images.size(), 1u);  // the OBJ's checker texture, in the file
+  EXPECT_EQ(m.images[0].width, 512);
+  std::ifstream png(out_dir() / "cow.checker.png", std::ios::binary);
+  const std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(png)), std::istreambuf_iterator<char>());
+  const auto& view = m.bufferViews.at(m.images[0].bufferView);
+  const auto* embedded = m.buffers.at(view.buffer).data.data() + view.byteOffset;
+  EXPECT_TRUE(view.byteLength == bytes.size() && std::equal(bytes.begin(), bytes.end(), embedded));
 }
 
 TEST_F(Tool, ClosedMeshesAreCutIntoPatchesAndEveryVertexIsMapped)

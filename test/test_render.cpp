@@ -148,6 +148,60 @@ TEST(Render, CameraHandedness)
   EXPECT_EQ(img.at(550, 300), blue);
 }
 
+TEST(Render, AMeshWithAnotherUpAxisIsTurnedUpright)
+{
+  // Rendering a mesh with its up axis z (or x) gives the very picture of the
+  // mesh turned so that this axis is y, from every view; the turn is a
+  // rotation, so lighting and face orientation agree too.
+  const Mesh& man = diffuv_test::cgal_mesh("man.off");
+  Mesh turned_z = man, turned_x = man;
+  for(auto v : vertices(man)) {
+    const Point_3& p = man.point(v);
+    turned_z.point(v) = Point_3(p.x(), p.z(), -p.y());
+    turned_x.point(v) = Point_3(-p.y(), p.x(), p.z());
+  }
+  auto color = [](Mesh::Face_index f) { return diffuv::patch_color(std::size_t(f) % 7); };
+  for(diffuv::View view : {diffuv::View::front, diffuv::View::iso, diffuv::View::top}) {
+    diffuv::Render_options o;
+    o.view = view;
+    o.width = 200;
+    o.height = 150;
+    const diffuv::Image upright = diffuv::render_mesh(turned_z, turned_z.points(), color, o);
+    o.up = diffuv::Up_axis::z;
+    const diffuv::Image z_up = diffuv::render_mesh(man, man.points(), color, o);
+    EXPECT_EQ(z_up.rgb, upright.rgb) << "view " << int(view);
+    o.up = diffuv::Up_axis::x;
+    const diffuv::Image x_up = diffuv::render_mesh(man, man.points(), color, o);
+    o.up = diffuv::Up_axis::y;
+    EXPECT_EQ(x_up.rgb, diffuv::render_mesh(turned_x, turned_x.points(), color, o).rgb) << "view " << int(view);
+  }
+  // man is modelled z-up (taller along z than deep along y), cow y-up.
+  EXPECT_EQ(diffuv::taller_of_y_and_z(man, man.points()), diffuv::Up_axis::z);
+  const Mesh& cow = diffuv_test::cgal_mesh("cow.off");
+  EXPECT_EQ(diffuv::taller_of_y_and_z(cow, cow.points()), diffuv::Up_axis::y);
+  EXPECT_EQ(diffuv::taller_of_y_and_z(turned_z, turned_z.points()), diffuv::Up_axis::y);
+  // Upright, man's picture from the front is taller than wide; lying on his back, wider.
+  auto extent = [](const diffuv::Image& img) {
+    int x0 = img.width, x1 = -1, y0 = img.height, y1 = -1;
+    for(int y = 0; y < img.height; ++y)
+      for(int x = 0; x < img.width; ++x)
+        if(!(img.at(x, y) == white)) {
+          x0 = std::min(x0, x);
+          x1 = std::max(x1, x);
+          y0 = std::min(y0, y);
+          y1 = std::max(y1, y);
+        }
+    return std::make_pair(x1 - x0, y1 - y0);
+  };
+  diffuv::Render_options o = front();
+  o.width = o.height = 300;
+  const auto lying = extent(diffuv::render_mesh(man, man.points(), color, o));
+  o.up = diffuv::Up_axis::z;
+  const auto standing = extent(diffuv::render_mesh(man, man.points(), color, o));
+  EXPECT_GT(standing.second, 2 * standing.first);
+  EXPECT_LT(lying.second, standing.second);
+}
+
 TEST(Render, ZBufferKeepsTheNearestFaceWhateverTheOrder)
 {
   for(bool red_first : {true, false}) {

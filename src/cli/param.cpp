@@ -13,6 +13,7 @@
 #include <diffuv/output/write_uv_table.h>
 #include <diffuv/render/pack_charts.h>
 #include <diffuv/render/texture.h>
+#include <diffuv/render/write_gltf.h>
 
 #include <algorithm>
 #include <cmath>
@@ -20,6 +21,7 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
@@ -27,24 +29,24 @@
 namespace diffuv_cli {
 namespace {
 
-/// What --outputs names: obj (with its .mtl and checker texture), uv, patches, picture.
+/// What --outputs names: obj (with its .mtl and checker texture), glb, uv, patches, picture.
 struct Outputs {
-  bool obj = false, uv = false, patches = false, picture = false;
+  bool obj = false, glb = false, uv = false, patches = false, picture = false;
 };
 
 Outputs parse_outputs(const Param_options& options)
 {
-  if(options.render_only) return Outputs{false, false, false, true};
+  if(options.render_only) return Outputs{false, false, false, false, true};
   Outputs o;
   for(const std::string& name : split_list(options.outputs)) {
-    bool* flag = name == "obj" ? &o.obj : name == "uv" ? &o.uv : name == "patches" ? &o.patches
+    bool* flag = name == "obj" ? &o.obj : name == "glb" ? &o.glb : name == "uv" ? &o.uv : name == "patches" ? &o.patches
                : name == "picture" ? &o.picture : nullptr;
     if(!flag)
-      throw CLI::ValidationError("--outputs", "unknown output '" + name + "' (obj, uv, patches or picture)");
+      throw CLI::ValidationError("--outputs", "unknown output '" + name + "' (obj, glb, uv, patches or picture)");
     if(*flag) throw CLI::ValidationError("--outputs", "'" + name + "' is listed twice");
     *flag = true;
   }
-  if(!o.obj && !o.uv && !o.patches && !o.picture && !options.svg)
+  if(!o.obj && !o.glb && !o.uv && !o.patches && !o.picture && !options.svg)
     throw CLI::ValidationError("--outputs", "no output given");
   return o;
 }
@@ -125,7 +127,7 @@ void run_param(const Param_options& options)
                                                                   : measure_charts(in, result, options.unit_squares);
   if(!options.no_measure) stages.done("measure");
   // The charts packed into one texture (unless stacked at its origin).
-  const bool packed = outputs.obj && !options.unit_squares && !options.stacked;
+  const bool packed = (outputs.obj || outputs.glb) && !options.unit_squares && !options.stacked;
   diffuv::Chart_packing packing;
   std::string atlas_line;
   if(packed) {
@@ -147,23 +149,37 @@ void run_param(const Param_options& options)
     atlas_line = line;
   }
   diffuv::Output_folder out(options.output, inputs);
-  if(outputs.obj) {
-    // A textured OBJ: any viewer shows the map as a checkerboard on the mesh.
-    const std::string texture = output_name(in.path, ".checker.png");
-    const std::string obj = output_name(in.path, ".obj"), mtl = output_name(in.path, ".mtl");
-    if(options.unit_squares)
-      diffuv::write_obj(out.open(obj), in.mesh, in.mesh.points(), atlas.corner_uv_map(), mtl, "diffuv_checker");
-    else if(options.stacked)
-      diffuv::write_obj(out.open(obj), in.mesh, in.mesh.points(), atlas.corner_texture_map(), mtl, "diffuv_checker");
-    else
-      diffuv::write_obj(out.open(obj), in.mesh, in.mesh.points(), diffuv::packed_corner_map(atlas, packing), mtl,
-                        "diffuv_checker");
-    diffuv::write_mtl(out.open(mtl), "diffuv_checker", texture);
-    // Packed: squares of 16 texels of the packed texture, the same size on
-    // every chart; stacked: 8 x 8 squares across each chart.
-    diffuv::write_png(out.open(texture), 512, 512,
+  // The texture of the OBJ and the glTF file. Packed: squares of 16 texels
+  // of the packed texture, the same size on every chart; stacked: 8 x 8
+  // squares across each chart.
+  std::ostringstream checker_png;
+  if(outputs.obj || outputs.glb)
+    diffuv::write_png(checker_png, 512, 512,
                       diffuv::checker_texture(512, packed ? std::max(8, options.texture_size / 16) : 8));
-  }
+  auto write_textured = [&](auto corner_uv) {
+    if(outputs.obj) {
+      // A textured OBJ: any viewer shows the map as a checkerboard on the mesh.
+      const std::string texture = output_name(in.path, ".checker.png");
+      const std::string mtl = output_name(in.path, ".mtl");
+      diffuv::write_obj(out.open(output_name(in.path, ".obj")), in.mesh, in.mesh.points(), corner_uv, mtl, "diffuv_checker");
+      diffuv::write_mtl(out.open(mtl), "diffuv_checker", texture);
+      out.open(texture) << checker_png.str();
+    }
+    if(outputs.glb) {
+      // The same, as one self-contained glTF 2.0 file (three.js, Blender, game engines).
+      diffuv::Gltf_options gltf;
+      gltf.png = checker_png.str();
+      gltf.name = std::filesystem::path(in.path).stem().string();
+      if(!diffuv::write_glb(out.open(output_name(in.path, ".glb")), in.mesh, in.mesh.points(), corner_uv, gltf))
+        throw diffuv::Output_error(output_name(in.path, ".glb"), "glTF encoding failed");
+    }
+  };
+  if(options.unit_squares)
+    write_textured(atlas.corner_uv_map());
+  else if(options.stacked)
+    write_textured(atlas.corner_texture_map());
+  else if(outputs.obj || outputs.glb)
+    write_textured(diffuv::packed_corner_map(atlas, packing));
   if(options.svg) write_uv_layouts(out, in, result);
   if(outputs.uv) diffuv::write_uv_table(out.open(output_name(in.path, ".uv.csv")), atlas);
   if(outputs.patches) write_polygon_patches(out.open(output_name(in.path, ".patches.txt")), in, result.seg);
@@ -211,6 +227,11 @@ void add_common_options(CLI::App* cmd, Param_options& o)
   CLI::Option* view = cmd->add_option("--view", o.view, "View of the picture: front, back, left, right, top or iso")
       ->check(CLI::IsMember({"front", "back", "left", "right", "top", "iso"}))
       ->capture_default_str();
+  cmd->add_option("--up", o.up,
+                  "The mesh's up axis in the picture: x, y, z, or auto (the taller of y and z: man and hand, "
+                  "modelled z-up, stand upright; cow, y-up, too)")
+      ->check(CLI::IsMember({"auto", "x", "y", "z"}))
+      ->capture_default_str();
   const auto finite = CLI::Validator(
       [](std::string& text) {
         try {
@@ -255,7 +276,7 @@ void add_param_command(CLI::App& app)
   auto options = std::make_shared<Param_options>();
   CLI::App* cmd = app.add_subcommand(
       "param", "Parameterize a mesh patch by patch, each onto a rectangle of its own aspect (--unit-squares: the unit "
-               "square); write OBJ (vt per corner, the charts packed into one texture), a uv table, "
+               "square); write OBJ and glTF (the charts packed into one texture), a uv table, "
                "the patches and a picture");
   add_common_options(cmd, *options);
   cmd->add_flag("--svg", options->svg, "Also write each patch's uv layout as OUTPUT/<mesh>.patch<N>.svg (flipped "
@@ -276,7 +297,8 @@ void add_param_command(CLI::App& app)
       ->check(number_in(0, 256))
       ->capture_default_str();
   cmd->add_option("--outputs", options->outputs,
-                  "What to write, a comma-separated list of: obj (the OBJ with its .mtl and checker texture), uv (the "
+                  "What to write, a comma-separated list of: obj (the OBJ with its .mtl and checker texture), glb (the same "
+                  "mesh, uv and texture as one binary glTF 2.0 file), uv (the "
                   "uv table), patches (the label file), picture (the PNG)")
       ->capture_default_str();
   cmd->add_option("--runs", options->runs, "Run the parameterization N times and report the median time")
@@ -285,7 +307,8 @@ void add_param_command(CLI::App& app)
   cmd->footer(std::string("Writes, unless --outputs says otherwise, OUTPUT/<mesh>.obj (v in input order, one vt per distinct (vertex, uv), "
               "the charts packed side by side into one texture of --texture-size texels unless --stacked or --unit-squares), "
               "OUTPUT/<mesh>.uv.csv (vertex,patch,u,v), OUTPUT/<mesh>.mtl and <mesh>.checker.png (the OBJ's material "
-              "and texture), OUTPUT/<mesh>.png (the mesh with its patches and u, v isolines) and "
+              "and texture), OUTPUT/<mesh>.glb (the same mesh, texture coordinates and texture as one binary glTF 2.0 "
+              "file), OUTPUT/<mesh>.png (the mesh with its patches and u, v isolines) and "
               "OUTPUT/<mesh>.patches.txt (the patch of each face of the mesh file, one per "
               "line: a label file for --labels).\nA patch that cannot be mapped is listed and warned about; the others "
               "are written (with --strict, or if none can be mapped: an error).\n") + exit_codes);

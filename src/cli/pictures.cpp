@@ -40,6 +40,10 @@ diffuv::Image picture(const Input_mesh& in, const Parameterization& result, cons
   diffuv::Render_options look;
   std::tie(look.width, look.height) = picture_size(options.size);
   look.view = parse_view(options.view);
+  look.up = options.up == "x"   ? diffuv::Up_axis::x
+            : options.up == "y" ? diffuv::Up_axis::y
+            : options.up == "z" ? diffuv::Up_axis::z
+                                : diffuv::taller_of_y_and_z(in.mesh, in.mesh.points());
   if(!std::isnan(options.azimuth)) {
     look.use_angles = true;
     look.azimuth = options.azimuth;

@@ -33,6 +33,7 @@ struct Param_options {
   std::string distance = "fmm";
   bool no_repair = false;
   std::string view = "iso";
+  std::string up = "auto";  // the mesh's up axis in the picture (--up): x, y, z or auto
   double azimuth = std::numeric_limits<double>::quiet_NaN(); // set: the camera's angles (refused with --view)
   double elevation = 20;
   std::string size = "800x600";
@@ -46,7 +47,7 @@ struct Param_options {
   bool render_only = false; // diffuv render: the picture only
   std::size_t threads = 0;   // 0: every core (with oneTBB)
   Patch_cli_options patches;
-  std::string outputs = "obj,uv,patches,picture"; // param: what is written (--outputs)
+  std::string outputs = "obj,glb,uv,patches,picture"; // param: what is written (--outputs)
   bool no_measure = false;   // skip the distortion measures (the table shows '-')
   bool quiet = false;        // print nothing but warnings and errors
 };

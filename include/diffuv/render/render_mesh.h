@@ -19,6 +19,11 @@
 // (cos(e) sin(a), sin(e), cos(e) cos(a)) from the mesh (a = azimuth, e =
 // elevation, in degrees): azimuth 0 elevation 0 is `front`, azimuth 90 is
 // `right`, elevation 90 is `top`.
+// A mesh modelled with another axis up (`Render_options::up`: z for man,
+// hand and most scans, as in Blender) is first turned so that this axis
+// points up: z up is seen as (x, z, -y), so that `front` looks from -y along
+// +y, as Blender's front view does; x up as (-y, x, z). `taller_of_y_and_z()`
+// guesses the axis from the mesh's extent.
 #ifndef DIFFUV_RENDER_RENDER_MESH_H
 #define DIFFUV_RENDER_RENDER_MESH_H
 
@@ -98,8 +103,12 @@ private:
 /// The standard camera directions (see the conventions at the top of this header).
 enum class View { front, back, left, right, top, iso };
 
+/// Which axis of the mesh points up in the picture.
+enum class Up_axis { y, z, x };
+
 /// How `render_mesh()` draws.
 struct Render_options {
+  Up_axis up = Up_axis::y;            ///< the mesh's up axis (see the conventions at the top of this header)
   int width = 800, height = 600;      ///< image size in pixels (both > 0)
   View view = View::iso;              ///< the camera, unless `use_angles`
   bool use_angles = false;            ///< use `azimuth` and `elevation` instead of `view`
@@ -112,6 +121,28 @@ struct Render_options {
   double margin = 0.05;               ///< fraction of the width and height left empty on each side
   double ambient = 0.25;              ///< shade of a face seen edge-on; a face facing the camera gets its full colour
 };
+
+/// The up axis most meshes mean: of y and z, the one along which the mesh is
+/// taller (x is left to right in both common conventions). A figure
+/// modelled z-up (man, hand) is taller along z than it is deep along y; a
+/// y-up cow is taller along y than wide along z. A flat mesh lying in the xz
+/// plane (a terrain, y up) would be read as z-up: pass the axis then.
+/// \returns `Up_axis::y` for an empty mesh or a tie
+template <class TriangleMesh, class VertexPointMap>
+Up_axis taller_of_y_and_z(const TriangleMesh& tm, VertexPointMap vpm)
+{
+  double lo[2] = {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
+  double hi[2] = {-lo[0], -lo[1]};
+  for(auto v : vertices(tm)) {
+    const auto& p = get(vpm, v);
+    const double yz[2] = {CGAL::to_double(p.y()), CGAL::to_double(p.z())};
+    for(int k = 0; k < 2; ++k) {
+      lo[k] = (std::min)(lo[k], yz[k]);
+      hi[k] = (std::max)(hi[k], yz[k]);
+    }
+  }
+  return hi[1] - lo[1] > hi[0] - lo[0] ? Up_axis::z : Up_axis::y;
+}
 
 namespace internal {
 
@@ -236,7 +267,13 @@ Image render_mesh(const TriangleMesh& tm, VertexPointMap vpm, FaceColor face_col
 
   auto point_of = [&](vertex_descriptor v) {
     const auto& p = get(vpm, v);
-    return Vec3{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
+    const double x = CGAL::to_double(p.x()), y = CGAL::to_double(p.y()), z = CGAL::to_double(p.z());
+    // Turned so that the mesh's up axis is +y (rotations: the faces keep their turn).
+    switch(options.up) {
+      case Up_axis::z: return Vec3{x, z, -y};
+      case Up_axis::x: return Vec3{-y, x, z};
+      default: return Vec3{x, y, z};
+    }
   };
 
   // Fit: the extent of the mesh along the image axes.
