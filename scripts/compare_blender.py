@@ -33,8 +33,10 @@ def run(command):
 
 def measure(diffuv, obj):
     lines = run([diffuv, "measure", obj]).splitlines()
-    values = lines[-1].split()
-    keys = ["charts", "not_injective", "flipped", "degen", "overlaps", "angle", "area", "l2", "linf"]
+    header = next(i for i, line in enumerate(lines) if line.split()[:2] == ["charts", "not_1-to-1"])
+    values = lines[header + 1].split()
+    keys = ["charts", "not_injective", "flipped", "degen", "overlaps", "angle", "area", "l2", "linf",
+            "texels", "shared", "density10"]
     return dict(zip(keys, [float(v) for v in values]))
 
 
@@ -103,16 +105,20 @@ def main():
             b["ms"] = ms
         rows.append((stem, d, b))
         print("measured", stem, file=sys.stderr)
-    print("| mesh | diffuv charts | not 1-to-1 | moved | L2 | area | angle | layout ms | map ms |"
-          " Blender charts | not 1-to-1 | L2 | area | angle | Blender ms |")
-    print("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
+    # texture: texels of a 1024 x 1024 texture whose centre lies in a chart;
+    # density: share of the 3D area in charts within 10 % of the median texel density.
+    print("| mesh | diffuv charts | not 1-to-1 | moved | L2 | area | angle | texture | density ±10 % | layout ms | map ms |"
+          " Blender charts | not 1-to-1 | L2 | area | angle | texture | density ±10 % | Blender ms |")
+    print("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
     for stem, d, b in rows:
-        line = "| %s | %d | %d | %.2f %% | %.3f | %.3f | %.3f | %.0f | %.0f |" % (
-            stem, d["charts"], d["not_injective"], d["moved"], d["l2"], d["area"], d["angle"], d["patches_ms"], d["map_ms"])
+        line = "| %s | %d | %d | %.2f %% | %.3f | %.3f | %.3f | %.1f %% | %.1f %% | %.0f | %.0f |" % (
+            stem, d["charts"], d["not_injective"], d["moved"], d["l2"], d["area"], d["angle"], d["texels"],
+            d["density10"], d["patches_ms"], d["map_ms"])
         if b:
-            line += " %d | %d | %.3f | %.3f | %.3f | %.0f |" % (b["charts"], b["not_injective"], b["l2"], b["area"], b["angle"], b["ms"])
+            line += " %d | %d | %.3f | %.3f | %.3f | %.1f %% | %.1f %% | %.0f |" % (
+                b["charts"], b["not_injective"], b["l2"], b["area"], b["angle"], b["texels"], b["density10"], b["ms"])
         else:
-            line += " - | - | - | - | - | - |"
+            line += " - | - | - | - | - | - | - | - |"
         print(line)
 
 

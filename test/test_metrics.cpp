@@ -3,6 +3,7 @@
 // mean-value parameterization of a real mesh, an O(F^2) exact overlap count,
 // and Eigen's SVD for the closed-form singular values.
 #include <diffuv/metrics/distortion.h>
+#include <diffuv/metrics/texture_use.h>
 
 #include "test_data.h"
 
@@ -621,3 +622,36 @@ TEST(Distortion, TwoHalvesCombineIntoTheWhole)
 }
 
 } // namespace
+
+TEST(TextureUse, CoveredSharedAndDensityCountedTexelByTexel)
+{
+  // Chart 0: the left half of the texture, two triangles, 3D area 2.
+  // Chart 1: a quarter square in the top right, 3D area 1 (the same density).
+  // Chart 2: the bottom right quarter and a strip above it, at twice that
+  // density, overlapping chart 1 by the strip.
+  using T = diffuv::Uv_triangle_in_chart;
+  std::vector<T> t;
+  auto square = [&](double x0, double y0, double x1, double y1, double area, std::size_t chart) {
+    t.push_back(T{{{{x0, y0}, {x1, y0}, {x1, y1}}}, area / 2, chart});
+    t.push_back(T{{{{x0, y0}, {x1, y1}, {x0, y1}}}, area / 2, chart});
+  };
+  square(0, 0, 0.5, 1, 2., 0);
+  square(0.5, 0.5, 1, 1, 1., 1);
+  square(0.5, 0., 1, 0.5 + 1. / 16, 0.28125, 2);  // uv area 0.28125 = 3D area: density 64, twice the others
+  const diffuv::Texture_use use = diffuv::measure_texture_use(t, 64);
+  EXPECT_DOUBLE_EQ(use.covered, 1.);
+  // The strip shared by charts 1 and 2: 64 texels wide, 4 rows (y from 0.5 to 0.5625).
+  EXPECT_DOUBLE_EQ(use.shared, 4. * 32 / (64 * 64));
+  // Densities: 64 * sqrt(0.5 / 2) = 32 for charts 0 and 1, 64 for chart 2.
+  EXPECT_NEAR(use.density_median, 32., 1e-9);
+  EXPECT_NEAR(use.within_10_percent, 3. / 3.28125, 1e-12);
+  EXPECT_NEAR(use.lowest, 1., 1e-12);
+  EXPECT_NEAR(use.highest, 2., 1e-9);
+  // Outside the unit square nothing is counted; clockwise triangles count as well.
+  std::vector<T> outside{T{{{{1.5, 1.5}, {2., 1.5}, {2., 2.}}}, 1., 0}, T{{{{0., 0.}, {0., 0.5}, {0.5, 0.}}}, 1., 1}};
+  const diffuv::Texture_use o = diffuv::measure_texture_use(outside, 16);
+  // The lower left half of a quarter: texel centres with i + j <= 7, those on the diagonal included.
+  EXPECT_DOUBLE_EQ(o.covered, 36. / 256.);
+  EXPECT_EQ(o.shared, 0.);
+  EXPECT_THROW(diffuv::measure_texture_use(t, 0), std::invalid_argument);
+}

@@ -66,6 +66,7 @@
 #include <diffuv/atlas/Uv_atlas.h>
 
 #include <diffuv/metrics/distortion.h>
+#include <diffuv/metrics/texture_use.h>
 
 #include <diffuv/parameterization/chart_rectangle.h>
 #include <diffuv/parameterization/diffusion_coordinates.h>
