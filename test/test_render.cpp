@@ -2,6 +2,7 @@
 // expectations (fit, shading, z-buffer, isolines, camera handedness), the
 // colour ramps, and the PNG writer read back with stb_image.
 #include <diffuv/render/render_mesh.h>
+#include <diffuv/render/texture_layout.h>
 
 #include "test_data.h"
 
@@ -200,6 +201,40 @@ TEST(Render, AMeshWithAnotherUpAxisIsTurnedUpright)
   const auto standing = extent(diffuv::render_mesh(man, man.points(), color, o));
   EXPECT_GT(standing.second, 2 * standing.first);
   EXPECT_LT(lying.second, standing.second);
+}
+
+TEST(Render, TextureLayoutDrawsEachChartWhereItsTextureCoordinatesPutIt)
+{
+  // The unit square, its uv = (x, y), placed in the texture at [0.25, 0.75]
+  // x [0.5, 0.75] (half as tall as wide): at 64 x 64 texels it covers columns
+  // 16..47 and rows 16..31 (the image's rows go down from v = 1).
+  Mesh m;
+  add_square(m, 0, 0, 0);
+  const auto texture = boost::make_function_property_map<Mesh::Halfedge_index>([&m](Mesh::Halfedge_index h) {
+    const Point_3& p = m.point(m.target(h));
+    return Point_2(0.25 + 0.5 * p.x(), 0.5 + 0.25 * p.y());
+  });
+  diffuv::Texture_layout_options o;
+  o.size = 64;
+  o.isolines = 0;
+  const diffuv::Image plain = diffuv::render_texture_layout(m, texture, uniform(red), xy_uv(m), o);
+  for(int y = 0; y < 64; ++y)
+    for(int x = 0; x < 64; ++x) {
+      const bool inside = x >= 16 && x < 48 && y >= 16 && y < 32;
+      EXPECT_EQ(plain.at(x, y), inside ? red : o.background) << x << ", " << y;
+    }
+  // Isolines every 1/2 of the chart's own (u,v): u = 1/2 falls between columns 31 and 32.
+  o.isolines = 2;
+  const diffuv::Image lined = diffuv::render_texture_layout(m, texture, uniform(red), xy_uv(m), o);
+  EXPECT_EQ(lined.at(31, 20), o.u_line_color);
+  EXPECT_EQ(lined.at(20, 24), o.v_line_color);  // v = 1/2: texture v = 0.625, row 24
+  EXPECT_EQ(lined.at(20, 20), red);
+  EXPECT_EQ(lined.at(5, 5), o.background);
+  // No uv: the chart without lines; no texture point: nothing.
+  EXPECT_EQ(diffuv::render_texture_layout(m, texture, uniform(red), nan_uv(), o).at(31, 20), red);
+  EXPECT_EQ(diffuv::render_texture_layout(m, nan_uv(), uniform(red), xy_uv(m), o).at(31, 20), o.background);
+  o.size = 0;
+  EXPECT_THROW(diffuv::render_texture_layout(m, texture, uniform(red), xy_uv(m), o), std::invalid_argument);
 }
 
 TEST(Render, ZBufferKeepsTheNearestFaceWhateverTheOrder)

@@ -13,6 +13,7 @@
 #include <diffuv/output/write_uv_table.h>
 #include <diffuv/render/pack_charts.h>
 #include <diffuv/render/texture.h>
+#include <diffuv/render/texture_layout.h>
 #include <diffuv/render/write_gltf.h>
 
 #include <algorithm>
@@ -29,24 +30,24 @@
 namespace diffuv_cli {
 namespace {
 
-/// What --outputs names: obj (with its .mtl and checker texture), glb, uv, patches, picture.
+/// What --outputs names: obj (with its .mtl and checker texture), glb, atlas, uv, patches, picture.
 struct Outputs {
-  bool obj = false, glb = false, uv = false, patches = false, picture = false;
+  bool obj = false, glb = false, atlas = false, uv = false, patches = false, picture = false;
 };
 
 Outputs parse_outputs(const Param_options& options)
 {
-  if(options.render_only) return Outputs{false, false, false, false, true};
+  if(options.render_only) return Outputs{false, false, false, false, false, true};
   Outputs o;
   for(const std::string& name : split_list(options.outputs)) {
-    bool* flag = name == "obj" ? &o.obj : name == "glb" ? &o.glb : name == "uv" ? &o.uv : name == "patches" ? &o.patches
-               : name == "picture" ? &o.picture : nullptr;
+    bool* flag = name == "obj" ? &o.obj : name == "glb" ? &o.glb : name == "atlas" ? &o.atlas : name == "uv" ? &o.uv
+               : name == "patches" ? &o.patches : name == "picture" ? &o.picture : nullptr;
     if(!flag)
-      throw CLI::ValidationError("--outputs", "unknown output '" + name + "' (obj, glb, uv, patches or picture)");
+      throw CLI::ValidationError("--outputs", "unknown output '" + name + "' (obj, glb, atlas, uv, patches or picture)");
     if(*flag) throw CLI::ValidationError("--outputs", "'" + name + "' is listed twice");
     *flag = true;
   }
-  if(!o.obj && !o.glb && !o.uv && !o.patches && !o.picture && !options.svg)
+  if(!o.obj && !o.glb && !o.atlas && !o.uv && !o.patches && !o.picture && !options.svg)
     throw CLI::ValidationError("--outputs", "no output given");
   return o;
 }
@@ -127,7 +128,8 @@ void run_param(const Param_options& options)
                                                                   : measure_charts(in, result, options.unit_squares);
   if(!options.no_measure) stages.done("measure");
   // The charts packed into one texture (unless stacked at its origin).
-  const bool packed = (outputs.obj || outputs.glb) && !options.unit_squares && !options.stacked;
+  const bool textured = outputs.obj || outputs.glb || outputs.atlas;
+  const bool packed = textured && !options.unit_squares && !options.stacked;
   diffuv::Chart_packing packing;
   std::string atlas_line;
   if(packed) {
@@ -173,12 +175,22 @@ void run_param(const Param_options& options)
       if(!diffuv::write_glb(out.open(output_name(in.path, ".glb")), in.mesh, in.mesh.points(), corner_uv, gltf))
         throw diffuv::Output_error(output_name(in.path, ".glb"), "glTF encoding failed");
     }
+    if(outputs.atlas) {
+      // The texture's layout: each chart in its patch's colour where its
+      // texture coordinates put it, one pixel per texel (at most 4096).
+      diffuv::Texture_layout_options look;
+      look.size = std::min(options.texture_size, 4096);
+      const diffuv::Image layout = diffuv::render_texture_layout(
+          in.mesh, corner_uv, [&](Mesh::Face_index f) { return diffuv::patch_color(result.seg.face_patch[f.idx()]); },
+          atlas.corner_uv_map(), look);
+      diffuv::write_png(out.open(output_name(in.path, ".atlas.png")), layout, output_name(in.path, ".atlas.png"));
+    }
   };
   if(options.unit_squares)
     write_textured(atlas.corner_uv_map());
   else if(options.stacked)
     write_textured(atlas.corner_texture_map());
-  else if(outputs.obj || outputs.glb)
+  else if(textured)
     write_textured(diffuv::packed_corner_map(atlas, packing));
   if(options.svg) write_uv_layouts(out, in, result);
   if(outputs.uv) diffuv::write_uv_table(out.open(output_name(in.path, ".uv.csv")), atlas);
@@ -298,7 +310,8 @@ void add_param_command(CLI::App& app)
       ->capture_default_str();
   cmd->add_option("--outputs", options->outputs,
                   "What to write, a comma-separated list of: obj (the OBJ with its .mtl and checker texture), glb (the same "
-                  "mesh, uv and texture as one binary glTF 2.0 file), uv (the "
+                  "mesh, uv and texture as one binary glTF 2.0 file), atlas (a picture of the charts in the texture, "
+                  "<mesh>.atlas.png; not written by default), uv (the "
                   "uv table), patches (the label file), picture (the PNG)")
       ->capture_default_str();
   cmd->add_option("--runs", options->runs, "Run the parameterization N times and report the median time")

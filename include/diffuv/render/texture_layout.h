@@ -1,0 +1,108 @@
+// diffuv: a picture of an atlas in its texture: every chart's triangles
+// drawn where the texture coordinates put them, in the chart's colour, with
+// the isolines of the charts' own (u,v). It shows how the charts are packed
+// (and what a painter of the texture would see).
+#ifndef DIFFUV_RENDER_TEXTURE_LAYOUT_H
+#define DIFFUV_RENDER_TEXTURE_LAYOUT_H
+
+#include <diffuv/render/render_mesh.h>
+
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/number_utils.h>
+
+#include <boost/graph/graph_traits.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <vector>
+
+namespace diffuv {
+
+/// How `render_texture_layout()` draws.
+struct Texture_layout_options {
+  int size = 1024;                     ///< the picture's width and height in pixels: one pixel per texel at the texture's size
+  int isolines = 8;                    ///< lines u = k / isolines and v = k / isolines of each chart's own (u,v) (0: none)
+  Color background{70, 70, 70};        ///< texels in no chart
+  Color u_line_color{10, 40, 130};
+  Color v_line_color{130, 20, 20};
+};
+
+/// Draws the faces of `tm` at their per-corner texture coordinates
+/// (`corner_texture`: halfedge -> 2D point in [0,1]^2, v up; the image's
+/// top row is v = 1), each filled with `face_color(f)`, and the isolines of
+/// `corner_uv` (halfedge -> the chart's own (u,v)) one pixel wide. Faces with
+/// a corner whose texture point or uv is not finite are skipped (or drawn
+/// without lines).
+/// \throws std::invalid_argument if `options.size` is not positive or
+///         `options.isolines` is negative
+template <class TriangleMesh, class TextureMap, class FaceColor, class CornerUvMap>
+Image render_texture_layout(const TriangleMesh& tm, TextureMap corner_texture, FaceColor face_color, CornerUvMap corner_uv,
+                            const Texture_layout_options& options = Texture_layout_options())
+{
+  using halfedge_descriptor = typename boost::graph_traits<TriangleMesh>::halfedge_descriptor;
+  using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
+  if(options.size <= 0) throw std::invalid_argument("render_texture_layout: the size must be positive");
+  if(options.isolines < 0) throw std::invalid_argument("render_texture_layout: isolines must not be negative");
+  const int S = options.size, N = options.isolines;
+  Image image(S, S, options.background);
+  std::vector<halfedge_descriptor> corners;
+  for(face_descriptor f : faces(tm)) {
+    corners.clear();
+    for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, tm), tm)) corners.push_back(h);
+    const Color base = face_color(f);
+    for(std::size_t k = 1; k + 1 < corners.size(); ++k) {
+      const halfedge_descriptor hs[3] = {corners[0], corners[k], corners[k + 1]};
+      double x[3], y[3], u[3], v[3];
+      bool drawn = true, lines = N > 0;
+      for(int i = 0; i < 3; ++i) {
+        const auto t = get(corner_texture, hs[i]);
+        x[i] = CGAL::to_double(t.x()) * S;
+        y[i] = (1. - CGAL::to_double(t.y())) * S;  // image rows go down
+        const auto q = get(corner_uv, hs[i]);
+        u[i] = CGAL::to_double(q.x());
+        v[i] = CGAL::to_double(q.y());
+        drawn = drawn && std::isfinite(x[i]) && std::isfinite(y[i]);
+        lines = lines && std::isfinite(u[i]) && std::isfinite(v[i]);
+      }
+      if(!drawn) continue;
+      const double area = (x[1] - x[0]) * (y[2] - y[0]) - (x[2] - x[0]) * (y[1] - y[0]);
+      if(!(std::abs(area) > 1e-12)) continue;
+      double grad_u = 0., grad_v = 0.;
+      if(lines) {
+        const double d1x = x[1] - x[0], d1y = y[1] - y[0], d2x = x[2] - x[0], d2y = y[2] - y[0];
+        auto gradient = [&](const double* t) {
+          const double dt1 = t[1] - t[0], dt2 = t[2] - t[0];
+          const double gx = (dt1 * d2y - dt2 * d1y) / area, gy = (dt2 * d1x - dt1 * d2x) / area;
+          return std::sqrt(gx * gx + gy * gy);
+        };
+        grad_u = gradient(u);
+        grad_v = gradient(v);
+      }
+      const int x0 = (std::max)(0, int(std::floor((std::min)({x[0], x[1], x[2]}) - 0.5)));
+      const int x1 = (std::min)(S - 1, int(std::ceil((std::max)({x[0], x[1], x[2]}) - 0.5)));
+      const int y0 = (std::max)(0, int(std::floor((std::min)({y[0], y[1], y[2]}) - 0.5)));
+      const int y1 = (std::min)(S - 1, int(std::ceil((std::max)({y[0], y[1], y[2]}) - 0.5)));
+      for(int py = y0; py <= y1; ++py)
+        for(int px = x0; px <= x1; ++px) {
+          const double qx = px + 0.5, qy = py + 0.5;
+          const double w0 = ((x[1] - qx) * (y[2] - qy) - (x[2] - qx) * (y[1] - qy)) / area;
+          const double w1 = ((x[2] - qx) * (y[0] - qy) - (x[0] - qx) * (y[2] - qy)) / area;
+          const double w2 = 1. - w0 - w1;
+          if(w0 < -1e-9 || w1 < -1e-9 || w2 < -1e-9) continue;
+          Color c = base;
+          if(lines) {
+            const double du = internal::isoline_pixel_distance(w0 * u[0] + w1 * u[1] + w2 * u[2], N, grad_u);
+            const double dv = internal::isoline_pixel_distance(w0 * v[0] + w1 * v[1] + w2 * v[2], N, grad_v);
+            if(du <= 0.5 || dv <= 0.5) c = du <= dv ? options.u_line_color : options.v_line_color;
+          }
+          image.set(px, py, c);
+        }
+    }
+  }
+  return image;
+}
+
+} // namespace diffuv
+
+#endif // DIFFUV_RENDER_TEXTURE_LAYOUT_H
