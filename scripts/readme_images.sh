@@ -10,7 +10,7 @@
 #                     built here if missing; about 18 min) for doc/images/performance_*.png
 #
 # Without the options only the tool's pictures are made (a few seconds):
-#   cow.png, cow_atlas.png, three_peaks_angle.png (README.md), cow_layout_area.png, man_layout_area.png (doc/layout.md).
+#   cow.png, cow_atlas.png, three_peaks_angle.png (README.md), man_atlas.png (doc/atlas.md), cow_layout_area.png, man_layout_area.png (doc/layout.md).
 # The meshes are CGAL's, extracted from Debian's libcgal-demo
 # (/usr/share/doc/libcgal-dev/data.tar.gz, as the build does) into a
 # temporary folder in which the commands run, so that they name a mesh by its
@@ -62,6 +62,10 @@ picture out/cow.png cow.png
 # README.md, "Quick start": the texture the cow's charts are packed into.
 run "$diffuv" param cow.off --outputs atlas -o out
 picture out/cow.atlas.png cow_atlas.png
+
+# doc/atlas.md: man's packed texture.
+run "$diffuv" param man.off --outputs atlas -o out
+picture out/man.atlas.png man_atlas.png
 
 # README.md: the paper's method (graph distances, no repair) folds at the bottom of two peaks.
 run "$diffuv" render three_peaks.off --color angle --distance graph --no-repair -o out

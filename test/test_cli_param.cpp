@@ -145,7 +145,7 @@ TEST_F(Tool, TheGlbFileHoldsTheObjsMeshTextureCoordinatesAndTexture)
       for(std::size_t c = 0; c < 3; ++c) ASSERT_NEAR(points[3 * i + c], obj.positions[obj.triangles[t][k]][c], 1e-5);
     }
   ASSERT_EQ(m.images.size(), 1u);  // the OBJ's checker texture, in the file
-  EXPECT_EQ(m.images[0].width, 512);
+  EXPECT_EQ(m.images[0].width, 1024);  // the texture the charts are packed into (--texture-size)
   std::ifstream png(out_dir() / "cow.checker.png", std::ios::binary);
   const std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(png)), std::istreambuf_iterator<char>());
   const auto& view = m.bufferViews.at(m.images[0].bufferView);

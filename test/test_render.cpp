@@ -176,11 +176,14 @@ TEST(Render, AMeshWithAnotherUpAxisIsTurnedUpright)
     o.up = diffuv::Up_axis::y;
     EXPECT_EQ(x_up.rgb, diffuv::render_mesh(turned_x, turned_x.points(), color, o).rgb) << "view " << int(view);
   }
-  // man is modelled z-up (taller along z than deep along y), cow y-up.
-  EXPECT_EQ(diffuv::taller_of_y_and_z(man, man.points()), diffuv::Up_axis::z);
+  // man is modelled z-up (3.4 times taller along z than deep along y); cow
+  // and pig y-up (pig lies long along z: 2.1 times its height).
+  EXPECT_EQ(diffuv::guess_up_axis(man, man.points()), diffuv::Up_axis::z);
+  const Mesh& pig = diffuv_test::cgal_mesh("pig.off");
+  EXPECT_EQ(diffuv::guess_up_axis(pig, pig.points()), diffuv::Up_axis::y);
   const Mesh& cow = diffuv_test::cgal_mesh("cow.off");
-  EXPECT_EQ(diffuv::taller_of_y_and_z(cow, cow.points()), diffuv::Up_axis::y);
-  EXPECT_EQ(diffuv::taller_of_y_and_z(turned_z, turned_z.points()), diffuv::Up_axis::y);
+  EXPECT_EQ(diffuv::guess_up_axis(cow, cow.points()), diffuv::Up_axis::y);
+  EXPECT_EQ(diffuv::guess_up_axis(turned_z, turned_z.points()), diffuv::Up_axis::y);
   // Upright, man's picture from the front is taller than wide; lying on his back, wider.
   auto extent = [](const diffuv::Image& img) {
     int x0 = img.width, x1 = -1, y0 = img.height, y1 = -1;

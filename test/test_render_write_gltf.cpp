@@ -8,6 +8,7 @@
 
 #include <CGAL/Simple_cartesian.h>
 
+#include <cmath>
 #include <cstring>
 #include <fstream>
 #include <iterator>
@@ -170,6 +171,19 @@ TEST(WriteGltf, AGridReadsBackWithItsSeamAndTexture)
   EXPECT_EQ(m.images[0].mimeType, "image/png");
   EXPECT_EQ(m.images[0].width, 32);
   EXPECT_EQ(m.images[0].height, 16);
+  // glTF is y-up: a z-up mesh's node is turned -90 degrees about x, so that
+  // (x, y, z) is seen at (x, z, -y); the vertex data stay as they were.
+  ASSERT_EQ(m.nodes.size(), 1u);
+  EXPECT_TRUE(m.nodes[0].rotation.empty());
+  options.up = diffuv::Up_axis::z;
+  std::ostringstream z_up;
+  ASSERT_TRUE(diffuv::write_glb(z_up, g.mesh, g.mesh.points(), g.uv, options));
+  const tinygltf::Model turned = read_back(z_up.str());
+  const double h = std::sqrt(0.5);
+  ASSERT_EQ(turned.nodes.at(0).rotation.size(), 4u);
+  EXPECT_NEAR(turned.nodes[0].rotation[0], -h, 1e-12);
+  EXPECT_NEAR(turned.nodes[0].rotation[3], h, 1e-12);
+  EXPECT_EQ(accessor_values(turned, turned.meshes[0].primitives[0].attributes.at("POSITION")), position);
 }
 
 using WriteGltfFile = diffuv_test::Temp_dir_test;

@@ -1,6 +1,7 @@
 // diffuv tool: `diffuv measure` — the distortion of an OBJ's texture charts,
 // whoever made them (diffuv, Blender's Smart UV Project, xatlas ...).
 #include "commands.h"
+#include "inputs.h"
 #include "table.h"
 
 #include <diffuv/internal/message_text.h>
@@ -12,7 +13,10 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 
+#include <algorithm>
 #include <array>
+#include <cctype>
+#include <filesystem>
 #include <cmath>
 #include <iostream>
 #include <memory>
@@ -34,6 +38,13 @@ struct Measure_options {
 
 void run_measure(const Measure_options& options)
 {
+  std::string extension = std::filesystem::path(options.obj).extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
+  if(extension != ".obj")
+    throw diffuv::Input_error(options.obj, 0,
+                              "diffuv measure reads OBJ files with texture coordinates (f v/vt ...), not " +
+                                  (extension.empty() ? std::string("a file without extension")
+                                                     : "\"" + extension + "\" files"));
   const diffuv::Obj_charts obj = diffuv::read_obj_charts(options.obj);
   // Each chart as a soup of unwelded triangles: the measures need no
   // connectivity, and an atlas tool's charts need not be manifold.
@@ -81,6 +92,11 @@ void run_measure(const Measure_options& options)
     in_texture[t].chart = obj.chart[t];
   }
   const diffuv::Texture_use use = diffuv::measure_texture_use(in_texture, options.texture_size);
+  std::size_t outside = 0;
+  for(const auto& q : obj.texcoords) outside += !(q[0] >= 0 && q[0] <= 1 && q[1] >= 0 && q[1] <= 1);
+  if(outside > 0)
+    std::cerr << "warning: " << count_text(outside, "texture coordinate") << " of " << obj.texcoords.size()
+              << " lie outside [0,1]: texels% and shared% count only what lies in the texture's square\n";
   std::cout << "diffuv measure " << options.obj << ": " << count_text(obj.positions.size(), "vertex", "vertices") << ", "
             << count_text(total.faces, "textured triangle") << " in " << count_text(obj.number_of_charts, "chart");
   if(obj.faces_without_uv > 0) std::cout << " (" << count_text(obj.faces_without_uv, "face") << " without vt)";
@@ -116,8 +132,8 @@ void add_measure_command(CLI::App& app)
   cmd->add_flag("--charts", options->charts, "Also print one line per chart");
   cmd->add_option("--texture-size", options->texture_size,
                   "Texels per side of the texture the atlas is measured on (texels%, shared%: texels whose centre "
-                  "lies in a chart, in two charts)")
-      ->check(CLI::Range(1, 65536))
+                  "lies in a chart, in two charts; 4 bytes of memory per texel)")
+      ->check(number_in(16, 8192))
       ->capture_default_str();
   cmd->footer("A chart is a set of faces joined across edges whose two corners share their vt (and their g/o group). "
               "Means are weighted by 3D area, each chart normalised by its own areas (1 = isometric up to scale); "

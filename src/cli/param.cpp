@@ -155,9 +155,11 @@ void run_param(const Param_options& options)
   // of the packed texture, the same size on every chart; stacked: 8 x 8
   // squares across each chart.
   std::ostringstream checker_png;
-  if(outputs.obj || outputs.glb)
-    diffuv::write_png(checker_png, 512, 512,
-                      diffuv::checker_texture(512, packed ? std::max(8, options.texture_size / 16) : 8));
+  if(outputs.obj || outputs.glb) {
+    // Packed: the texture itself, --texture-size texels wide; stacked: 512.
+    const int size = packed ? options.texture_size : 512;
+    diffuv::write_png(checker_png, size, size, diffuv::checker_texture(size, packed ? std::max(1, size / 16) : 8));
+  }
   auto write_textured = [&](auto corner_uv) {
     if(outputs.obj) {
       // A textured OBJ: any viewer shows the map as a checkerboard on the mesh.
@@ -172,14 +174,15 @@ void run_param(const Param_options& options)
       diffuv::Gltf_options gltf;
       gltf.png = checker_png.str();
       gltf.name = std::filesystem::path(in.path).stem().string();
+      gltf.up = up_axis(in, options);
       if(!diffuv::write_glb(out.open(output_name(in.path, ".glb")), in.mesh, in.mesh.points(), corner_uv, gltf))
         throw diffuv::Output_error(output_name(in.path, ".glb"), "glTF encoding failed");
     }
     if(outputs.atlas) {
       // The texture's layout: each chart in its patch's colour where its
-      // texture coordinates put it, one pixel per texel (at most 4096).
+      // texture coordinates put it, one pixel per texel.
       diffuv::Texture_layout_options look;
-      look.size = std::min(options.texture_size, 4096);
+      look.size = options.texture_size;
       const diffuv::Image layout = diffuv::render_texture_layout(
           in.mesh, corner_uv, [&](Mesh::Face_index f) { return diffuv::patch_color(result.seg.face_patch[f.idx()]); },
           atlas.corner_uv_map(), look);
@@ -240,8 +243,10 @@ void add_common_options(CLI::App* cmd, Param_options& o)
       ->check(CLI::IsMember({"front", "back", "left", "right", "top", "iso"}))
       ->capture_default_str();
   cmd->add_option("--up", o.up,
-                  "The mesh's up axis in the picture: x, y, z, or auto (the taller of y and z: man and hand, "
-                  "modelled z-up, stand upright; cow, y-up, too)")
+                  "The mesh's up axis: x, y, z, or auto (z for a mesh more than 2.5 times taller along z than deep "
+                  "along y, as man.off; else y, as cow.off). The picture shows it upright (with z up, front looks "
+                  "along +y as in Blender, with x up along -z) and the glTF file turns its node so that it stands "
+                  "in glTF's y-up frame")
       ->check(CLI::IsMember({"auto", "x", "y", "z"}))
       ->capture_default_str();
   const auto finite = CLI::Validator(
@@ -255,7 +260,7 @@ void add_common_options(CLI::App* cmd, Param_options& o)
       "DEGREES");
   CLI::Option* azimuth =
       cmd->add_option("--azimuth", o.azimuth,
-                      "Camera azimuth in degrees around the y axis (0: looking along -z, as front); instead of --view")
+                      "Camera azimuth in degrees around the up axis (0: as front); instead of --view")
           ->check(finite)
           ->check(number_in(-360, 360, false));
   azimuth->excludes(view);
@@ -300,9 +305,9 @@ void add_param_command(CLI::App& app)
                 "Draw every chart on its own rectangle at the origin of the texture (charts on top of each other), "
                 "instead of packing them side by side into one texture");
   cmd->add_option("--texture-size", options->texture_size,
-                  "Width and height in texels of the texture the charts are packed into: the OBJ's texture "
-                  "coordinates keep the charts this many texels apart")
-      ->check(number_in(16, 65536))
+                  "Width and height in texels of the texture the charts are packed into (the checker texture "
+                  "written beside the OBJ and in the glTF file has this size)")
+      ->check(number_in(16, 8192))
       ->capture_default_str();
   cmd->add_option("--gutter", options->gutter,
                   "Texels kept free on each side of a packed chart, so that filtering does not mix two charts")

@@ -34,16 +34,21 @@ std::pair<int, int> picture_size(const std::string& s)
   return *size;
 }
 
+diffuv::Up_axis up_axis(const Input_mesh& in, const Param_options& options)
+{
+  return options.up == "x"   ? diffuv::Up_axis::x
+         : options.up == "y" ? diffuv::Up_axis::y
+         : options.up == "z" ? diffuv::Up_axis::z
+                             : diffuv::guess_up_axis(in.mesh, in.mesh.points());
+}
+
 diffuv::Image picture(const Input_mesh& in, const Parameterization& result, const std::vector<Chart_measure>& measures,
                       const Param_options& options)
 {
   diffuv::Render_options look;
   std::tie(look.width, look.height) = picture_size(options.size);
   look.view = parse_view(options.view);
-  look.up = options.up == "x"   ? diffuv::Up_axis::x
-            : options.up == "y" ? diffuv::Up_axis::y
-            : options.up == "z" ? diffuv::Up_axis::z
-                                : diffuv::taller_of_y_and_z(in.mesh, in.mesh.points());
+  look.up = up_axis(in, options);
   if(!std::isnan(options.azimuth)) {
     look.use_angles = true;
     look.azimuth = options.azimuth;

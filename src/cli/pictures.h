@@ -18,6 +18,9 @@ namespace diffuv_cli {
 /// \throws CLI::ValidationError (a usage error) for a size the tool cannot draw
 std::pair<int, int> picture_size(const std::string& size);
 
+/// The mesh's up axis that --up names (auto: `diffuv::guess_up_axis()`), for the picture and the glTF file.
+diffuv::Up_axis up_axis(const Input_mesh& in, const Param_options& options);
+
 /// The picture: the mesh with u, v isolines, faces coloured by patch or by a
 /// distortion measure (a heat map on a log scale, flipped faces in magenta,
 /// faces in no chart grey, and a colour bar).

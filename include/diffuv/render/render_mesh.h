@@ -22,7 +22,7 @@
 // A mesh modelled with another axis up (`Render_options::up`: z for man,
 // hand and most scans, as in Blender) is first turned so that this axis
 // points up: z up is seen as (x, z, -y), so that `front` looks from -y along
-// +y, as Blender's front view does; x up as (-y, x, z). `taller_of_y_and_z()`
+// +y, as Blender's front view does; x up as (-y, x, z). `guess_up_axis()`
 // guesses the axis from the mesh's extent.
 #ifndef DIFFUV_RENDER_RENDER_MESH_H
 #define DIFFUV_RENDER_RENDER_MESH_H
@@ -122,14 +122,15 @@ struct Render_options {
   double ambient = 0.25;              ///< shade of a face seen edge-on; a face facing the camera gets its full colour
 };
 
-/// The up axis most meshes mean: of y and z, the one along which the mesh is
-/// taller (x is left to right in both common conventions). A figure
-/// modelled z-up (man, hand) is taller along z than it is deep along y; a
-/// y-up cow is taller along y than wide along z. A flat mesh lying in the xz
-/// plane (a terrain, y up) would be read as z-up: pass the axis then.
-/// \returns `Up_axis::y` for an empty mesh or a tie
+/// A guess at a mesh's up axis from its extent: z when the mesh is much
+/// taller along z than deep along y (more than `ratio` times: a standing
+/// figure modelled z-up, as man.off at 3.4), else y, the convention of most
+/// meshes. The ratio is high because animals modelled y-up often lie long
+/// along z (pig.off: z 2.1 times y, camel 1.0, lion 1.05); a z-up mesh that
+/// is not that tall (hand.off: 1.25) needs its axis given.
+/// \returns `Up_axis::y` for an empty mesh
 template <class TriangleMesh, class VertexPointMap>
-Up_axis taller_of_y_and_z(const TriangleMesh& tm, VertexPointMap vpm)
+Up_axis guess_up_axis(const TriangleMesh& tm, VertexPointMap vpm, double ratio = 2.5)
 {
   double lo[2] = {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
   double hi[2] = {-lo[0], -lo[1]};
@@ -141,7 +142,7 @@ Up_axis taller_of_y_and_z(const TriangleMesh& tm, VertexPointMap vpm)
       hi[k] = (std::max)(hi[k], yz[k]);
     }
   }
-  return hi[1] - lo[1] > hi[0] - lo[0] ? Up_axis::z : Up_axis::y;
+  return hi[1] - lo[1] > ratio * (hi[0] - lo[0]) ? Up_axis::z : Up_axis::y;
 }
 
 namespace internal {

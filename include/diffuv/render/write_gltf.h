@@ -12,6 +12,7 @@
 #define DIFFUV_RENDER_WRITE_GLTF_H
 
 #include <diffuv/io/atomic_file.h>
+#include <diffuv/render/render_mesh.h>
 
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/number_utils.h>
@@ -43,6 +44,10 @@ struct Gltf_options {
   /// get a plain white material.
   std::string png;
   std::string name = "diffuv";  ///< the mesh's and the node's name
+  /// The mesh's up axis. glTF's is +y: for z (or x) up the node is turned
+  /// (-90 degrees about x, or 90 about z) so that viewers show the mesh
+  /// upright; the vertex data stay the mesh's own coordinates.
+  Up_axis up = Up_axis::y;
 };
 
 namespace internal {
@@ -255,6 +260,9 @@ bool write_glb(std::ostream& out, const TriangleMesh& tm, VertexPointMap vpm, Co
   tinygltf::Node node;
   node.mesh = 0;
   node.name = options.name;
+  const double half = std::sqrt(0.5);  // sin and cos of 45 degrees
+  if(options.up == Up_axis::z) node.rotation = {-half, 0., 0., half};  // (x, y, z) -> (x, z, -y)
+  if(options.up == Up_axis::x) node.rotation = {0., 0., half, half};   // (x, y, z) -> (-y, x, z)
   model.nodes.push_back(node);
   tinygltf::Scene scene;
   scene.nodes.push_back(0);
