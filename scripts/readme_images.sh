@@ -68,7 +68,7 @@ run "$diffuv" param man.off --outputs atlas -o out
 picture out/man.atlas.png man_atlas.png
 
 # README.md: the paper's method (graph distances, no repair) folds at the bottom of two peaks.
-run "$diffuv" render three_peaks.off --color angle --distance graph --no-repair -o out
+run "$diffuv" render three_peaks.off --color angle --distance graph --no-repair --layout voronoi -o out
 picture out/three_peaks.png three_peaks_angle.png
 
 # doc/layout.md: the four-sided layout's area distortion.

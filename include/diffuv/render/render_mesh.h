@@ -210,6 +210,17 @@ struct No_corner_uv_map {
   }
 };
 
+/// The length of the image-space gradient of a value `t` given at a
+/// triangle's three corners (x, y in pixels; `twice_area` the signed doubled
+/// area of the triangle in pixels): units of t per pixel.
+inline double gradient_length(const double* x, const double* y, const double* t, double twice_area)
+{
+  const double d1x = x[1] - x[0], d1y = y[1] - y[0], d2x = x[2] - x[0], d2y = y[2] - y[0];
+  const double dt1 = t[1] - t[0], dt2 = t[2] - t[0];
+  const double gx = (dt1 * d2y - dt2 * d1y) / twice_area, gy = (dt2 * d1x - dt1 * d2x) / twice_area;
+  return std::sqrt(gx * gx + gy * gy);
+}
+
 /// Distance in pixels from the value `t` (u or v) to the nearest isoline
 /// k / n, given the length of the screen gradient of t in units per pixel.
 inline double isoline_pixel_distance(double t, int n, double gradient_length)
@@ -343,14 +354,9 @@ Image render_mesh(const TriangleMesh& tm, VertexPointMap vpm, FaceColor face_col
       // Screen gradients of u and v (units per pixel), for line widths in pixels.
       double grad_u = 0., grad_v = 0.;
       if(has_uv) {
-        const double d1x = s[1].x - s[0].x, d1y = s[1].y - s[0].y, d2x = s[2].x - s[0].x, d2y = s[2].y - s[0].y;
-        auto gradient = [&](const double* t) {
-          const double dt1 = t[1] - t[0], dt2 = t[2] - t[0];
-          const double gx = (dt1 * d2y - dt2 * d1y) / area, gy = (dt2 * d1x - dt1 * d2x) / area;
-          return std::sqrt(gx * gx + gy * gy);
-        };
-        grad_u = gradient(u);
-        grad_v = gradient(v);
+        const double sx[3] = {s[0].x, s[1].x, s[2].x}, sy[3] = {s[0].y, s[1].y, s[2].y};
+        grad_u = internal::gradient_length(sx, sy, u, area);
+        grad_v = internal::gradient_length(sx, sy, v, area);
       }
 
       const int x0 = (std::max)(0, int(std::floor((std::min)({s[0].x, s[1].x, s[2].x}) - 0.5)));

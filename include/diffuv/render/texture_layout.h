@@ -70,14 +70,8 @@ Image render_texture_layout(const TriangleMesh& tm, TextureMap corner_texture, F
       if(!(std::abs(area) > 1e-12)) continue;
       double grad_u = 0., grad_v = 0.;
       if(lines) {
-        const double d1x = x[1] - x[0], d1y = y[1] - y[0], d2x = x[2] - x[0], d2y = y[2] - y[0];
-        auto gradient = [&](const double* t) {
-          const double dt1 = t[1] - t[0], dt2 = t[2] - t[0];
-          const double gx = (dt1 * d2y - dt2 * d1y) / area, gy = (dt2 * d1x - dt1 * d2x) / area;
-          return std::sqrt(gx * gx + gy * gy);
-        };
-        grad_u = gradient(u);
-        grad_v = gradient(v);
+        grad_u = internal::gradient_length(x, y, u, area);
+        grad_v = internal::gradient_length(x, y, v, area);
       }
       const int x0 = (std::max)(0, int(std::floor((std::min)({x[0], x[1], x[2]}) - 0.5)));
       const int x1 = (std::min)(S - 1, int(std::ceil((std::max)({x[0], x[1], x[2]}) - 0.5)));
