@@ -101,6 +101,14 @@ TEST_F(Tool, TheObjChartsArePackedIntoOneTexture)
     for(std::size_t k : on_top.triangle_uv[t]) from_origin += on_top.texcoords[k][0] == 0 && on_top.texcoords[k][1] == 0;
   EXPECT_GT(from_origin, 100u); // every chart has a corner at (0,0)
 
+  // Packing's options with charts that are not packed: a usage error.
+  for(const char* both : {"--stacked --texture-size 64", "--unit-squares --gutter 3", "--unit-squares --stacked"}) {
+    const Tool_run refused = run("param " + data_path("meshes/cow.off") + " " + both + " -o " + (out_dir() / "both").string());
+    EXPECT_EQ(refused.code, 2) << both;
+    EXPECT_NE(refused.err.find("excludes"), std::string::npos) << refused.err;
+    EXPECT_FALSE(std::filesystem::exists(out_dir() / "both"));
+  }
+
   // Gutters the texture cannot hold: a usage error naming the options.
   const Tool_run tight = run("param " + data_path("meshes/cow.off") + " --texture-size 16 -o " + (out_dir() / "tight").string());
   EXPECT_EQ(tight.code, 2) << tight.err;

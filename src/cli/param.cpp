@@ -298,21 +298,27 @@ void add_param_command(CLI::App& app)
   add_common_options(cmd, *options);
   cmd->add_flag("--svg", options->svg, "Also write each patch's uv layout as OUTPUT/<mesh>.patch<N>.svg (flipped "
                                       "triangles in red, the four sides in colour)");
-  cmd->add_flag("--unit-squares", options->unit_squares,
+  CLI::Option* unit_squares = cmd->add_flag("--unit-squares", options->unit_squares,
                 "Write every chart on the unit square (the canonical (u,v)) instead of on a rectangle of its own "
                 "aspect (the aspect with the least stretch for the chart's map); the table then measures the squares");
-  cmd->add_flag("--stacked", options->stacked,
+  CLI::Option* stacked = cmd->add_flag("--stacked", options->stacked,
                 "Draw every chart on its own rectangle at the origin of the texture (charts on top of each other), "
                 "instead of packing them side by side into one texture");
-  cmd->add_option("--texture-size", options->texture_size,
+  // Unit squares are stacked too; neither packs, so the packing's options would be ignored.
+  unit_squares->excludes(stacked);
+  CLI::Option* texture_size = cmd->add_option("--texture-size", options->texture_size,
                   "Width and height in texels of the texture the charts are packed into (the checker texture "
                   "written beside the OBJ and in the glTF file has this size)")
       ->check(number_in(16, 8192))
       ->capture_default_str();
-  cmd->add_option("--gutter", options->gutter,
+  CLI::Option* gutter = cmd->add_option("--gutter", options->gutter,
                   "Texels kept free on each side of a packed chart, so that filtering does not mix two charts")
       ->check(number_in(0, 256))
       ->capture_default_str();
+  for(CLI::Option* packing : {texture_size, gutter}) {
+    packing->excludes(stacked);
+    packing->excludes(unit_squares);
+  }
   cmd->add_option("--outputs", options->outputs,
                   "What to write, a comma-separated list of: obj (the OBJ with its .mtl and checker texture), glb (the same "
                   "mesh, uv and texture as one binary glTF 2.0 file), atlas (a picture of the charts in the texture, "
