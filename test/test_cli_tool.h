@@ -7,12 +7,15 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
 #include <sys/wait.h>
+#include <utility>
 #include <vector>
 
 namespace diffuv_cli_test {
@@ -31,6 +34,28 @@ inline std::string slurp(const fs::path& p)
   std::stringstream ss;
   ss << in.rdbuf();
   return ss.str();
+}
+
+/// The width and height of the PNG file `p`, from its IHDR chunk (big-endian
+/// at bytes 16 and 20); {0, 0} if it does not start as a PNG file does.
+inline std::pair<std::uint32_t, std::uint32_t> png_size(const fs::path& p)
+{
+  const std::string png = slurp(p);
+  if(png.size() < 24 || png.substr(0, 8) != std::string("\x89PNG\r\n\x1a\n", 8)) return {0, 0};
+  auto be32 = [&](std::size_t at) {
+    return (std::uint32_t(std::uint8_t(png[at])) << 24) | (std::uint32_t(std::uint8_t(png[at + 1])) << 16) |
+           (std::uint32_t(std::uint8_t(png[at + 2])) << 8) | std::uint32_t(std::uint8_t(png[at + 3]));
+  };
+  return {be32(16), be32(20)};
+}
+
+/// The names of the files in folder `p`, sorted.
+inline std::vector<std::string> files_in(const fs::path& p)
+{
+  std::vector<std::string> names;
+  for(const auto& e : fs::directory_iterator(p)) names.push_back(e.path().filename().string());
+  std::sort(names.begin(), names.end());
+  return names;
 }
 
 #ifndef DIFFUV_TOOL_PATH

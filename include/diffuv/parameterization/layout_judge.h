@@ -298,10 +298,14 @@ std::size_t choose_fallback_corners(const TriangleMesh& tm, VertexPointMap vpm, 
       std::vector<std::size_t> rank(in_pool.size());
       std::iota(rank.begin(), rank.end(), 0);
       std::vector<double> rounded(in_pool.size());
-      for(std::size_t c = 0; c < in_pool.size(); ++c) rounded[c] = internal::rounded_score(estimate[c]);
+      std::vector<decltype(points_of(in_pool.front()))> points(in_pool.size());
+      for(std::size_t c = 0; c < in_pool.size(); ++c) {
+        rounded[c] = internal::rounded_score(estimate[c]);
+        points[c] = points_of(in_pool[c]);
+      }
       std::sort(rank.begin(), rank.end(), [&](std::size_t a, std::size_t b) {
         if(rounded[a] != rounded[b]) return rounded[a] < rounded[b];
-        return points_of(in_pool[a]) < points_of(in_pool[b]);
+        return points[a] < points[b];
       });
       std::vector<std::array<std::size_t, 4>> kept;
       for(std::size_t r = 0; r < options.mapped_candidates; ++r) kept.push_back(in_pool[rank[r]]);

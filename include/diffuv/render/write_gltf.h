@@ -220,8 +220,8 @@ bool write_glb(std::ostream& out, const TriangleMesh& tm, VertexPointMap vpm, Co
     if(!options.png.empty()) {
       tinygltf::Image image;
       image.mimeType = "image/png";
+      // Image data: a buffer view without target.
       image.bufferView = internal::append_buffer_view(model, std::vector<char>(options.png.begin(), options.png.end()), 0);
-      model.bufferViews.back().target = 0;  // image data: no target
       model.images.push_back(image);
       tinygltf::Sampler sampler;
       sampler.magFilter = TINYGLTF_TEXTURE_FILTER_LINEAR;
