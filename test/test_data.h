@@ -230,8 +230,12 @@ protected:
   void SetUp() override
   {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = std::filesystem::temp_directory_path() /
-           ("diffuv_test_" + std::to_string(::getpid()) + "_" + info->test_suite_name() + "_" + info->name());
+    // A parameterized test's names hold '/' ("Catalogue/BadInput", "Answer/3"):
+    // one folder per test, not a tree that TearDown() would remove only the leaf of.
+    std::string name = std::string("diffuv_test_") + std::to_string(::getpid()) + "_" +
+                       info->test_suite_name() + "_" + info->name();
+    std::replace(name.begin(), name.end(), '/', '_');
+    dir_ = std::filesystem::temp_directory_path() / name;
     std::filesystem::remove_all(dir_);
     std::filesystem::create_directories(dir_);
   }
