@@ -10,7 +10,9 @@
 #                     built here if missing; about 18 min) for doc/images/performance_*.png
 #
 # Without the options only the tool's pictures are made (a few seconds):
-#   cow.png, cow_atlas.png, three_peaks_angle.png (README.md), man_atlas.png (doc/atlas.md), cow_layout_area.png, man_layout_area.png (doc/layout.md).
+#   cow.png, cow_atlas.png, three_peaks_angle.png (README.md), man_atlas.png, cow_baked_normals.png,
+#   cow_normals_texture.png, man_baked_normals.png, elephant_baked_colors.png (doc/atlas.md),
+#   cow_layout_area.png, man_layout_area.png (doc/layout.md).
 # The meshes are CGAL's, extracted from Debian's libcgal-demo
 # (/usr/share/doc/libcgal-dev/data.tar.gz, as the build does) into a
 # temporary folder in which the commands run, so that they name a mesh by its
@@ -42,7 +44,8 @@ data_tar=/usr/share/doc/libcgal-dev/data.tar.gz
 
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-tar xzf "$data_tar" -C "$work" data/meshes/cow.off data/meshes/three_peaks.off data/meshes/man.off
+tar xzf "$data_tar" -C "$work" data/meshes/cow.off data/meshes/three_peaks.off data/meshes/man.off \
+  data/meshes/elephant.off data/meshes/refined_elephant.off
 images="$root/doc/images"
 cd "$work/data/meshes"
 
@@ -76,6 +79,17 @@ run "$diffuv" render cow.off --color area -o out
 picture out/cow.png cow_layout_area.png
 run "$diffuv" render man.off --color area -o out
 picture out/man.png man_layout_area.png
+# doc/atlas.md: normal maps baked into cow's and man's packed textures, and the
+# colours diffuv correspond carries onto the elephant, baked.
+run "$diffuv" bake cow.off --what normals --resolution 512 -o out
+picture out/cow.png cow_baked_normals.png
+picture out/cow.normals.png cow_normals_texture.png
+run "$diffuv" bake man.off --what normals --resolution 512 -o out
+picture out/man.png man_baked_normals.png
+run "$diffuv" segment elephant.off -o seg
+run "$diffuv" correspond seg/elephant.patches.ply refined_elephant.off --transfer-labels -o corr
+run "$diffuv" bake corr/transfer.ply -o out
+picture out/transfer.png elephant_baked_colors.png
 
 bench_program() { # bench_program TARGET: the path of a benchmark, built if missing
   if [ ! -x "$build/bench/$1" ]; then

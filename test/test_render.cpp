@@ -292,6 +292,36 @@ TEST(Render, IsolinesOnTheUnitSquare)
   EXPECT_EQ(count_in_row(none, 200, 130, 670, o.u_line_color), 0);
 }
 
+// With a texture, a face takes the texture's colour at its (u,v), filtered
+// bilinearly: a 2 x 2 texture (red, blue over green, white) on the unit
+// square seen from the front, (u,v) = (x,y); no isolines drawn over it.
+TEST(Render, TextureIsReadAtTheCornersUv)
+{
+  const Mesh m = diffuv_test::make_grid(4, 4);
+  diffuv::Image texture(2, 2);
+  texture.set(0, 0, red);   // top left: v = 1
+  texture.set(1, 0, blue);
+  texture.set(0, 1, Color{0, 255, 0});
+  texture.set(1, 1, white);
+  diffuv::Render_options o = front(4);
+  o.texture = &texture;
+  const diffuv::Image img = diffuv::render_mesh(m, m.points(), uniform(Color{9, 9, 9}), xy_uv(m), o);
+  // The square spans x in [130, 670] and y in [30, 570]; texel centres are at
+  // u, v = 1/4 and 3/4, and outside them the edge texels are clamped (u, v = 0.15 and 0.85 here).
+  EXPECT_EQ(img.at(211, 111), red);
+  EXPECT_EQ(img.at(589, 111), blue);
+  EXPECT_EQ(img.at(211, 489), (Color{0, 255, 0}));
+  EXPECT_EQ(img.at(589, 489), white);
+  // Halfway between red and blue, at the top: their mean.
+  const Color middle = img.at(400, 111);
+  EXPECT_NEAR(middle.r, 128, 2);
+  EXPECT_EQ(middle.g, 0);
+  EXPECT_NEAR(middle.b, 128, 2);
+  // Without (u,v) the face colour stays.
+  const diffuv::Image plain = diffuv::render_mesh(m, m.points(), uniform(Color{9, 9, 9}), nan_uv(), o);
+  EXPECT_EQ(plain.at(211, 111), (Color{9, 9, 9}));
+}
+
 TEST(Render, IsolineWidthIsInScreenPixels)
 {
   const Mesh m = diffuv_test::make_grid(3, 3);

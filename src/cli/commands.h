@@ -30,6 +30,9 @@ void add_correspond_command(CLI::App& app);
 /// Registers `diffuv segment`.
 void add_segment_command(CLI::App& app);
 
+/// Registers `diffuv bake` (in the param unity group: it runs param's pipeline).
+void add_bake_command(CLI::App& app);
+
 /// Registers `diffuv measure`.
 void add_measure_command(CLI::App& app);
 

@@ -69,39 +69,6 @@ std::string no_labels_message(const std::string& option, bool other_has_labels)
   return m;
 }
 
-// Per-vertex rows of numbers (one row per vertex of B): what --values transfers.
-std::vector<std::vector<double>> read_value_rows(const std::string& path, std::size_t expected_rows)
-{
-  std::ifstream in(path);
-  if(!in) throw diffuv::Input_error(path, 0, "cannot open file");
-  std::vector<std::vector<double>> rows;
-  std::string line;
-  std::size_t line_number = 0, columns = 0;
-  while(std::getline(in, line)) {
-    ++line_number;
-    const auto hash = line.find('#');
-    if(hash != std::string::npos) line.erase(hash);
-    std::istringstream fields(line);
-    std::vector<double> row;
-    std::string token;
-    while(fields >> token) {
-      double value = 0;
-      if(!diffuv::internal::parse_number(token, value) || !std::isfinite(value))
-        throw diffuv::Input_error(path, line_number, "\"" + token + "\" is not a finite number (separate values by spaces)");
-      row.push_back(value);
-    }
-    if(row.empty()) continue;
-    if(rows.empty()) columns = row.size();
-    if(row.size() != columns)
-      throw diffuv::Input_error(path, line_number, "this row has " + count_text(row.size(), "value") +
-                                                       ", the first row has " + std::to_string(columns));
-    rows.push_back(std::move(row));
-  }
-  if(rows.size() != expected_rows)
-    throw diffuv::Input_error(path, 0, "the file has " + count_text(rows.size(), "row") + ", mesh B has " +
-                                           count_text(expected_rows, "vertex", "vertices") + " (one row per vertex)");
-  return rows;
-}
 
 // A smooth colour field on B: its position in its bounding box, as red, green, blue.
 std::vector<diffuv::Color> position_colors(const Mesh& mesh)
@@ -193,7 +160,7 @@ void run_correspond(const Correspond_options& o)
   }
   std::vector<diffuv::Color> b_colors = diffuv::read_vertex_colors(b.path);
   std::vector<std::vector<double>> value_rows;
-  if(!o.values.empty()) value_rows = read_value_rows(o.values, num_vertices(b.mesh));
+  if(!o.values.empty()) value_rows = read_value_rows(o.values, num_vertices(b.mesh), "mesh B");
   const double read_ms = ms_since(start) - transfer_ms;
 
   diffuv::Labelled_atlas_options options;

@@ -9,6 +9,7 @@
 #include <diffuv/graph/distance_tags.h>
 #include <diffuv/core/color.h>
 #include <diffuv/io/paint_look.h>
+#include <diffuv/io/internal/number_tokens.h>
 #include <diffuv/io/painted_labels.h>
 #include <diffuv/io/read_labels.h>
 #include <diffuv/io/read_mesh.h>
@@ -23,10 +24,13 @@
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
+#include <fstream>
 #include <iostream>
 #include <filesystem>
 #include <map>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -166,6 +170,8 @@ struct Paint_reading {
   /// rank among the file's colours: two meshes painted with different sets of
   /// colours still give one colour the same label (correspondence).
   bool color_values = false;
+  /// Warn of vertex colours that do not look painted (ignored as regions); `bake` takes them as data.
+  bool warn_unpainted = true;
 };
 
 /// Reads the mesh and its regions: `--labels` first, else painted colours or
@@ -196,10 +202,11 @@ inline Input_mesh read_input(const std::string& path, const Patch_cli_options& o
       const diffuv::Paint_look look =
           diffuv::look_of_paint(in.mesh, diffuv::face_labels_of_mesh(painted.polygon_labels, in.report));
       if(!look.painted) {
-        std::cerr << "diffuv: warning: " << path << ": "
-                  << count_text(painted.colors.size(), "distinct vertex colour", "distinct vertex colours")
-                  << ", taken by the faces as " << count_text(look.colors, "colour") << " in "
-                  << count_text(look.areas, "area") << ": not taken as regions (--regions-from colors takes them)\n";
+        if(paint.warn_unpainted)
+          std::cerr << "diffuv: warning: " << path << ": "
+                    << count_text(painted.colors.size(), "distinct vertex colour", "distinct vertex colours")
+                    << ", taken by the faces as " << count_text(look.colors, "colour") << " in "
+                    << count_text(look.areas, "area") << ": not taken as regions (--regions-from colors takes them)\n";
         painted = diffuv::Painted_labels();
       }
     }
@@ -232,6 +239,44 @@ inline Input_mesh read_input(const std::string& path, const Patch_cli_options& o
                 << "); laying them out may take a while" << std::endl;
   }
   return in;
+}
+
+/// Per-vertex rows of numbers, one row per vertex, all rows as long as the
+/// first (`#` starts a comment): what `correspond --values` transfers and
+/// `bake --values` bakes. `mesh` names the mesh in the message for a wrong count.
+/// \throws diffuv::Input_error naming the file and line
+inline std::vector<std::vector<double>> read_value_rows(const std::string& path, std::size_t expected_rows,
+                                                       const std::string& mesh)
+{
+  std::ifstream in(path);
+  if(!in) throw diffuv::Input_error(path, 0, "cannot open file");
+  std::vector<std::vector<double>> rows;
+  std::string line;
+  std::size_t line_number = 0, columns = 0;
+  while(std::getline(in, line)) {
+    ++line_number;
+    const auto hash = line.find('#');
+    if(hash != std::string::npos) line.erase(hash);
+    std::istringstream fields(line);
+    std::vector<double> row;
+    std::string token;
+    while(fields >> token) {
+      double value = 0;
+      if(!diffuv::internal::parse_number(token, value) || !std::isfinite(value))
+        throw diffuv::Input_error(path, line_number, "\"" + token + "\" is not a finite number (separate values by spaces)");
+      row.push_back(value);
+    }
+    if(row.empty()) continue;
+    if(rows.empty()) columns = row.size();
+    if(row.size() != columns)
+      throw diffuv::Input_error(path, line_number, "this row has " + count_text(row.size(), "value") +
+                                                       ", the first row has " + std::to_string(columns));
+    rows.push_back(std::move(row));
+  }
+  if(rows.size() != expected_rows)
+    throw diffuv::Input_error(path, 0, "the file has " + count_text(rows.size(), "row") + ", " + mesh + " has " +
+                                           count_text(expected_rows, "vertex", "vertices") + " (one row per vertex)");
+  return rows;
 }
 
 /// What reading repaired, for the summary ("repaired: 12 faces reoriented, 1

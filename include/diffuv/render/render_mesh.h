@@ -100,6 +100,34 @@ private:
   std::size_t offset(int x, int y) const { return (std::size_t(y) * std::size_t(width) + std::size_t(x)) * 3; }
 };
 
+/// A colour with channels in [0,1] (a texture's sample, a baking sampler's value).
+using Rgb = std::array<double, 3>;
+
+/// The colour `c` as an `Rgb`.
+inline Rgb to_rgb(const Color& c) { return Rgb{c.r / 255., c.g / 255., c.b / 255.}; }
+
+/// The colour of `image` at texture point (s, t) (v up, as texture
+/// coordinates), filtered bilinearly between the four nearest texel centres
+/// as a GPU does (clamped to the edge): what a renderer shows there.
+inline Rgb sample_bilinear(const Image& image, double s, double t)
+{
+  if(image.width <= 0 || image.height <= 0) throw std::invalid_argument("sample_bilinear: empty image");
+  const double x = s * image.width - 0.5, y = (1. - t) * image.height - 0.5;
+  const double fx = std::floor(x), fy = std::floor(y);
+  const double ax = x - fx, ay = y - fy;
+  auto clamp = [](double i, int n) { return static_cast<int>((std::min)((std::max)(i, 0.), double(n - 1))); };
+  const int xs[2] = {clamp(fx, image.width), clamp(fx + 1., image.width)};
+  const int ys[2] = {clamp(fy, image.height), clamp(fy + 1., image.height)};
+  Rgb c{0., 0., 0.};
+  for(int j = 0; j < 2; ++j)
+    for(int i = 0; i < 2; ++i) {
+      const double weight = (i ? ax : 1. - ax) * (j ? ay : 1. - ay);
+      const std::size_t at = 3 * (std::size_t(ys[j]) * std::size_t(image.width) + std::size_t(xs[i]));
+      for(int k = 0; k < 3; ++k) c[std::size_t(k)] += weight * image.rgb[at + std::size_t(k)] / 255.;
+    }
+  return c;
+}
+
 /// The standard camera directions (see the conventions at the top of this header).
 enum class View { front, back, left, right, top, iso };
 
@@ -120,6 +148,10 @@ struct Render_options {
   Color v_line_color{130, 20, 20};     ///< colour of the lines v = k / isolines (dark red)
   double margin = 0.05;               ///< fraction of the width and height left empty on each side
   double ambient = 0.25;              ///< shade of a face seen edge-on; a face facing the camera gets its full colour
+  /// If set, faces take this texture's colour (`sample_bilinear()`) at the
+  /// corners' (u,v), read as texture coordinates, instead of `face_color`
+  /// and isolines; faces with no (u,v) keep `face_color`. Must outlive the call.
+  const Image* texture = nullptr;
 };
 
 /// A guess at a mesh's up axis from its extent: z when the mesh is much
@@ -330,7 +362,7 @@ Image render_mesh(const TriangleMesh& tm, VertexPointMap vpm, FaceColor face_col
       const halfedge_descriptor hs[3] = {corners[0], corners[k], corners[k + 1]};
       Vec3 p3[3], s[3];
       double u[3], v[3];
-      bool has_uv = N > 0;
+      bool has_uv = N > 0 || options.texture;
       for(int i = 0; i < 3; ++i) {
         p3[i] = point_of(target(hs[i], tm));
         s[i] = project(p3[i]);
@@ -377,7 +409,12 @@ Image render_mesh(const TriangleMesh& tm, VertexPointMap vpm, FaceColor face_col
           if(!(z > zb)) continue;
           zb = z;
           Color c = shaded;
-          if(has_uv) {
+          if(has_uv && options.texture) {
+            const Rgb t = sample_bilinear(*options.texture, w0 * u[0] + w1 * u[1] + w2 * u[2],
+                                          w0 * v[0] + w1 * v[1] + w2 * v[2]);
+            c = Color{internal::to_byte(255. * t[0] * shade), internal::to_byte(255. * t[1] * shade),
+                      internal::to_byte(255. * t[2] * shade)};
+          } else if(has_uv) {
             const double du = internal::isoline_pixel_distance(w0 * u[0] + w1 * u[1] + w2 * u[2], N, grad_u);
             const double dv = internal::isoline_pixel_distance(w0 * v[0] + w1 * v[1] + w2 * v[2], N, grad_v);
             if(du <= half_width || dv <= half_width) c = du <= dv ? options.u_line_color : options.v_line_color;

@@ -1,0 +1,368 @@
+// diffuv: baking data of the surface into the texture of a packed atlas.
+//
+// Every texel whose centre lies in a face (at the face's texture
+// coordinates) takes the value of the surface point it stands for: a
+// `sample(face, weights)` callback gets the face and the barycentric weights
+// of the texel's centre and returns an RGB colour. Samplers for per-vertex
+// values (colours, scalars), per-face colours (labels), vertex normals and
+// another mesh of the same object (closest point through CGAL's AABB tree)
+// are below.
+//
+// Two things make the texture usable with bilinear filtering:
+//  - the four texels around each vertex's texture point take the vertex's own
+//    value, so that a renderer reading the texture at a vertex gets the
+//    vertex's value back (a texel there otherwise holds the value at its
+//    centre, up to 0.7 texels away, across faces of different slopes);
+//  - texels in no chart next to the charts (the gutters) take the mean of
+//    their baked neighbours, pass after pass ("dilation"), so that filtering
+//    at a chart's border does not mix in the background.
+#ifndef DIFFUV_RENDER_BAKE_TEXTURE_H
+#define DIFFUV_RENDER_BAKE_TEXTURE_H
+
+#include <diffuv/render/render_mesh.h>
+
+#include <CGAL/AABB_face_graph_triangle_primitive.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/number_utils.h>
+
+#include <boost/graph/graph_traits.hpp>
+#include <boost/property_map/property_map.hpp>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#endif
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <stdexcept>
+#include <utility>
+#include <vector>
+
+namespace diffuv {
+
+/// What a texel of a baked texture holds.
+enum class Texel_source : unsigned char {
+  background = 0, ///< no chart: the background colour
+  face,           ///< the value at the surface point of its centre
+  vertex,         ///< a vertex's own value (one of the four texels around the vertex)
+  gutter          ///< the mean of its baked neighbours (dilation)
+};
+
+/// How `bake_texture()` bakes.
+struct Bake_options {
+  int size = 1024;                 ///< the texture's width and height in texels
+  int dilation = 8;                ///< passes of gutter dilation (each fills the texels next to the filled ones)
+  bool pin_vertices = true;        ///< the four texels around each vertex take the vertex's own value
+  Color background{0, 0, 0};       ///< texels left in no chart and not dilated
+};
+
+/// A baked texture: the image (row 0 is the top, v = 1) and where each texel's value came from.
+struct Baked_texture {
+  Image image;
+  std::vector<Texel_source> source; ///< per texel, `y * size + x`
+  std::size_t face_texels = 0, vertex_texels = 0, gutter_texels = 0;
+};
+
+namespace internal {
+
+inline unsigned char unit_to_byte(double c)
+{
+  if(!(c > 0.)) return 0;  // NaN too
+  if(c >= 1.) return 255;
+  return static_cast<unsigned char>(std::lround(c * 255.));
+}
+
+} // namespace internal
+
+/// Bakes `sample` into a texture of `options.size`^2 texels through the
+/// texture coordinates `corner_texture` (halfedge h -> the 2D point in
+/// [0,1]^2, v up, of target(h) in face(h)'s chart, e.g.
+/// `packed_corner_map()`). For a texel whose centre lies in triangle f,
+/// `sample(f, w)` gives its colour, with `w[i]` the weight of the target of
+/// the i-th halfedge of f from `halfedge(f, tm)` on; the four texels around a
+/// vertex's texture point take `sample(f, unit weight at that corner)` (the
+/// nearest vertex, if two are that close), unless `options.pin_vertices` is
+/// false. Then `options.dilation` passes fill the texels next to filled ones.
+/// Faces with a non-finite texture point, or of no area in the texture, are
+/// skipped; only the first three corners of a face are used (a triangle mesh).
+/// Samples are taken in parallel when CGAL is linked with oneTBB: `sample` must
+/// be callable from several threads at once.
+///
+/// \throws std::invalid_argument if the size is not in [1, 16384] or the dilation is negative
+template <class TriangleMesh, class TextureMap, class Sample>
+Baked_texture bake_texture(const TriangleMesh& tm, TextureMap corner_texture, const Sample& sample,
+                           const Bake_options& options = Bake_options())
+{
+  using halfedge_descriptor = typename boost::graph_traits<TriangleMesh>::halfedge_descriptor;
+  using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
+  if(options.size < 1 || options.size > 16384)  // texel numbers fit in 32 bits
+    throw std::invalid_argument("bake_texture: the size must be in [1, 16384]");
+  if(options.dilation < 0) throw std::invalid_argument("bake_texture: the dilation must not be negative");
+  const int S = options.size;
+  const std::size_t texels = std::size_t(S) * std::size_t(S);
+
+  // First where each texel's value comes from (cheap, one thread), then the
+  // samples (the costly part with a closest-point sampler), in parallel:
+  // the faces' texels, then the vertices' texels over them.
+  struct Texel_job {
+    std::uint32_t texel;
+    face_descriptor face;
+    float w0, w1;  // the third weight is 1 - w0 - w1
+  };
+  std::vector<Texel_job> face_jobs, vertex_jobs;
+  std::vector<Texel_source> source(texels, Texel_source::background);
+  struct Corner {
+    face_descriptor face;
+    int index;
+    double x, y;
+  };
+  std::vector<Corner> corners;
+  double covered_area = 0.;
+  for(int round = 0; round < 2; ++round) {
+    // Round 0 measures the faces' area in texels, to reserve the jobs at once.
+    if(round == 1) face_jobs.reserve(std::size_t(covered_area * 1.05) + 1024);
+    for(face_descriptor f : faces(tm)) {
+      const halfedge_descriptor h0 = halfedge(f, tm);
+      const halfedge_descriptor hs[3] = {h0, next(h0, tm), next(next(h0, tm), tm)};
+      double x[3], y[3];
+      bool finite = true;
+      for(int i = 0; i < 3; ++i) {
+        const auto t = get(corner_texture, hs[i]);
+        x[i] = CGAL::to_double(t.x()) * S;
+        y[i] = (1. - CGAL::to_double(t.y())) * S;  // image rows go down
+        finite = finite && std::isfinite(x[i]) && std::isfinite(y[i]);
+      }
+      if(!finite) continue;
+      const double area = (x[1] - x[0]) * (y[2] - y[0]) - (x[2] - x[0]) * (y[1] - y[0]);
+      if(!(std::abs(area) > 1e-12)) continue;
+      if(round == 0) {
+        covered_area += 0.5 * std::abs(area);
+        continue;
+      }
+      for(int i = 0; i < 3; ++i) corners.push_back(Corner{f, i, x[i], y[i]});
+      const int x0 = (std::max)(0, int(std::floor((std::min)({x[0], x[1], x[2]}) - 0.5)));
+      const int x1 = (std::min)(S - 1, int(std::ceil((std::max)({x[0], x[1], x[2]}) - 0.5)));
+      const int y0 = (std::max)(0, int(std::floor((std::min)({y[0], y[1], y[2]}) - 0.5)));
+      const int y1 = (std::min)(S - 1, int(std::ceil((std::max)({y[0], y[1], y[2]}) - 0.5)));
+      for(int py = y0; py <= y1; ++py)
+        for(int px = x0; px <= x1; ++px) {
+          const double qx = px + 0.5, qy = py + 0.5;
+          const double w0 = ((x[1] - qx) * (y[2] - qy) - (x[2] - qx) * (y[1] - qy)) / area;
+          const double w1 = ((x[2] - qx) * (y[0] - qy) - (x[0] - qx) * (y[2] - qy)) / area;
+          const double w2 = 1. - w0 - w1;
+          if(w0 < -1e-9 || w1 < -1e-9 || w2 < -1e-9) continue;
+          const std::size_t texel = std::size_t(py) * S + px;
+          // A texel on an edge of two faces is taken once.
+          if(source[texel] == Texel_source::face) continue;
+          source[texel] = Texel_source::face;
+          face_jobs.push_back(Texel_job{std::uint32_t(texel), f, float(w0), float(w1)});
+        }
+    }
+  }
+  if(options.pin_vertices) {
+    // The bilinear footprint of a point: the texels whose centres are the
+    // corners of the texel-sized square around it. A texel in two
+    // footprints goes to the nearer point.
+    std::vector<float> pin_distance(texels, std::numeric_limits<float>::infinity());
+    auto footprint = [&](const Corner& c, auto visit) {
+      const int bx = int(std::floor(c.x - 0.5)), by = int(std::floor(c.y - 0.5));
+      for(int py = by; py <= by + 1; ++py)
+        for(int px = bx; px <= bx + 1; ++px)
+          if(px >= 0 && py >= 0 && px < S && py < S)
+            visit(std::size_t(py) * S + px, float(std::hypot(px + 0.5 - c.x, py + 0.5 - c.y)));
+    };
+    for(const Corner& c : corners)
+      footprint(c, [&](std::size_t texel, float d) { pin_distance[texel] = (std::min)(pin_distance[texel], d); });
+    for(const Corner& c : corners)
+      footprint(c, [&](std::size_t texel, float d) {
+        if(d != pin_distance[texel]) return;
+        pin_distance[texel] = -1.f;  // taken: an equally near corner (the same vertex in another face) adds nothing
+        source[texel] = Texel_source::vertex;
+        vertex_jobs.push_back(Texel_job{std::uint32_t(texel), c.face, c.index == 0 ? 1.f : 0.f, c.index == 1 ? 1.f : 0.f});
+      });
+  }
+
+  Baked_texture baked;
+  baked.image = Image(S, S, options.background);
+  std::vector<unsigned char>& rgb = baked.image.rgb;
+  auto run = [&](const std::vector<Texel_job>& jobs, std::size_t begin, std::size_t end) {
+    for(std::size_t j = begin; j < end; ++j) {
+      const Texel_job& job = jobs[j];
+      const Rgb c = sample(job.face, std::array<double, 3>{double(job.w0), double(job.w1), 1. - double(job.w0) - double(job.w1)});
+      unsigned char* out = &rgb[3 * std::size_t(job.texel)];
+      for(int k = 0; k < 3; ++k) out[k] = internal::unit_to_byte(c[std::size_t(k)]);
+    }
+  };
+  for(const std::vector<Texel_job>* jobs : {&face_jobs, &vertex_jobs}) {
+#ifdef CGAL_LINKED_WITH_TBB
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, jobs->size(), 4096),
+                      [&](const tbb::blocked_range<std::size_t>& r) { run(*jobs, r.begin(), r.end()); });
+#else
+    run(*jobs, 0, jobs->size());
+#endif
+  }
+
+  // Dilation: each pass gives every empty texel next to a filled one (8
+  // neighbours) the mean of its filled neighbours as they were before the pass.
+  std::vector<std::size_t> frontier;
+  std::vector<std::array<unsigned char, 3>> fill;
+  for(int pass = 0; pass < options.dilation; ++pass) {
+    frontier.clear();
+    fill.clear();
+    for(int py = 0; py < S; ++py)
+      for(int px = 0; px < S; ++px) {
+        const std::size_t texel = std::size_t(py) * S + px;
+        if(source[texel] != Texel_source::background) continue;
+        double sum[3] = {0., 0., 0.};
+        int n = 0;
+        for(int dy = -1; dy <= 1; ++dy)
+          for(int dx = -1; dx <= 1; ++dx) {
+            const int nx = px + dx, ny = py + dy;
+            if((dx == 0 && dy == 0) || nx < 0 || ny < 0 || nx >= S || ny >= S) continue;
+            const std::size_t neighbour = std::size_t(ny) * S + nx;
+            if(source[neighbour] == Texel_source::background) continue;
+            for(int k = 0; k < 3; ++k) sum[k] += rgb[3 * neighbour + std::size_t(k)];
+            ++n;
+          }
+        if(n == 0) continue;
+        frontier.push_back(texel);
+        fill.push_back({static_cast<unsigned char>(std::lround(sum[0] / n)),
+                        static_cast<unsigned char>(std::lround(sum[1] / n)),
+                        static_cast<unsigned char>(std::lround(sum[2] / n))});
+      }
+    if(frontier.empty()) break;
+    for(std::size_t i = 0; i < frontier.size(); ++i) {
+      source[frontier[i]] = Texel_source::gutter;
+      for(int k = 0; k < 3; ++k) rgb[3 * frontier[i] + std::size_t(k)] = fill[i][std::size_t(k)];
+    }
+  }
+  for(Texel_source s : source) {
+    if(s == Texel_source::face) ++baked.face_texels;
+    else if(s == Texel_source::vertex) ++baked.vertex_texels;
+    else if(s == Texel_source::gutter) ++baked.gutter_texels;
+  }
+  baked.source = std::move(source);
+  return baked;
+}
+
+/// A sampler for `bake_texture()`: per-vertex colours (`values`: vertex -> `Rgb`)
+/// interpolated linearly across each face.
+template <class TriangleMesh, class VertexRgbMap>
+auto vertex_value_sampler(const TriangleMesh& tm, VertexRgbMap values)
+{
+  using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
+  return [&tm, values](face_descriptor f, const std::array<double, 3>& w) {
+    auto h = halfedge(f, tm);
+    Rgb c{0., 0., 0.};
+    for(int i = 0; i < 3; ++i, h = next(h, tm)) {
+      const Rgb value = get(values, target(h, tm));
+      for(int k = 0; k < 3; ++k) c[std::size_t(k)] += w[std::size_t(i)] * value[std::size_t(k)];
+    }
+    return c;
+  };
+}
+
+/// A sampler for `bake_texture()`: vertex normals (`normals`: vertex -> 3D
+/// vector) interpolated across each face, made unit and stored as an
+/// object-space normal map, (n + 1) / 2 per channel.
+template <class TriangleMesh, class VertexNormalMap>
+auto vertex_normal_sampler(const TriangleMesh& tm, VertexNormalMap normals)
+{
+  using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
+  return [&tm, normals](face_descriptor f, const std::array<double, 3>& w) {
+    auto h = halfedge(f, tm);
+    double n[3] = {0., 0., 0.};
+    for(int i = 0; i < 3; ++i, h = next(h, tm)) {
+      const auto normal = get(normals, target(h, tm));
+      n[0] += w[std::size_t(i)] * CGAL::to_double(normal.x());
+      n[1] += w[std::size_t(i)] * CGAL::to_double(normal.y());
+      n[2] += w[std::size_t(i)] * CGAL::to_double(normal.z());
+    }
+    const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    if(!(length > 0.)) return Rgb{0.5, 0.5, 0.5};
+    return Rgb{0.5 * (n[0] / length + 1.), 0.5 * (n[1] / length + 1.), 0.5 * (n[2] / length + 1.)};
+  };
+}
+
+/// A sampler for `bake_texture()` that takes its values from another mesh
+/// of the same object (e.g. a high-resolution scan): the texel's point on
+/// `tm` (weights of its face's corners), then the closest point on `source`
+/// (CGAL's AABB tree), whose face and weights (same corner order) go to
+/// `source_sample`. The tree is built once; calls may run in parallel.
+template <class TriangleMesh, class VertexPointMap, class SourceMesh, class SourceSample>
+class Closest_point_sampler {
+  using Source_points = typename boost::property_map<SourceMesh, CGAL::vertex_point_t>::const_type;
+  using Point_3 = typename boost::property_traits<Source_points>::value_type;
+  using Kernel = typename CGAL::Kernel_traits<Point_3>::Kernel;
+  using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, CGAL::AABB_face_graph_triangle_primitive<SourceMesh>>>;
+  using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
+
+public:
+  Closest_point_sampler(const TriangleMesh& tm, VertexPointMap vpm, const SourceMesh& source, SourceSample source_sample)
+      : tm_(&tm), vpm_(vpm), source_(&source), source_points_(get(CGAL::vertex_point, source)),
+        source_sample_(std::move(source_sample)),
+        tree_(std::make_shared<Tree>(faces(source).first, faces(source).second, source))
+  {
+    tree_->accelerate_distance_queries();
+  }
+
+  Rgb operator()(face_descriptor f, const std::array<double, 3>& w) const
+  {
+    auto h = halfedge(f, *tm_);
+    double p[3] = {0., 0., 0.};
+    for(int i = 0; i < 3; ++i, h = next(h, *tm_)) {
+      const auto& q = get(vpm_, target(h, *tm_));
+      p[0] += w[std::size_t(i)] * CGAL::to_double(q.x());
+      p[1] += w[std::size_t(i)] * CGAL::to_double(q.y());
+      p[2] += w[std::size_t(i)] * CGAL::to_double(q.z());
+    }
+    const auto nearest = tree_->closest_point_and_primitive(Point_3(p[0], p[1], p[2]));
+    const auto g = nearest.second;
+    // The closest point's weights in g: from the areas of the sub-triangles,
+    // projected onto the triangle's plane (the point lies on the triangle).
+    auto s = halfedge(g, *source_);
+    Point_3 c[3];
+    for(int i = 0; i < 3; ++i, s = next(s, *source_)) c[i] = get(source_points_, target(s, *source_));
+    const auto normal = CGAL::cross_product(c[1] - c[0], c[2] - c[0]);
+    const double whole = CGAL::to_double(normal.squared_length());
+    std::array<double, 3> ws{1. / 3, 1. / 3, 1. / 3};
+    if(whole > 0.) {
+      for(int i = 0; i < 3; ++i) {
+        const auto sub = CGAL::cross_product(c[(i + 1) % 3] - nearest.first, c[(i + 2) % 3] - nearest.first);
+        ws[std::size_t(i)] = (std::max)(0., CGAL::to_double(sub * normal) / whole);
+      }
+      const double sum = ws[0] + ws[1] + ws[2];
+      if(sum > 0.)
+        for(double& x : ws) x /= sum;
+    }
+    return source_sample_(g, ws);
+  }
+
+private:
+  const TriangleMesh* tm_;
+  VertexPointMap vpm_;
+  const SourceMesh* source_;
+  Source_points source_points_;
+  SourceSample source_sample_;
+  std::shared_ptr<Tree> tree_;
+};
+
+/// Makes a `Closest_point_sampler`.
+template <class TriangleMesh, class VertexPointMap, class SourceMesh, class SourceSample>
+Closest_point_sampler<TriangleMesh, VertexPointMap, SourceMesh, SourceSample>
+closest_point_sampler(const TriangleMesh& tm, VertexPointMap vpm, const SourceMesh& source, SourceSample source_sample)
+{
+  return Closest_point_sampler<TriangleMesh, VertexPointMap, SourceMesh, SourceSample>(tm, vpm, source,
+                                                                                       std::move(source_sample));
+}
+
+} // namespace diffuv
+
+#endif // DIFFUV_RENDER_BAKE_TEXTURE_H
