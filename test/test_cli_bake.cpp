@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -131,6 +132,15 @@ TEST_F(Tool, BakeRefusesWhatItCannotBake)
   };
   const std::string cow = data_path("meshes/cow.off");
   write("three.txt", "1\n2\n3\n");
+  // cow moved by twice its size: not the same object in the same place.
+  {
+    const diffuv_test::File_soup soup = diffuv_test::parse_off(cow);
+    std::ostringstream moved;
+    moved << "OFF\n" << soup.points.size() << ' ' << soup.faces.size() << " 0\n";
+    for(const auto& p : soup.points) moved << p[0] + 2. << ' ' << p[1] << ' ' << p[2] << '\n';
+    for(const auto& f : soup.faces) moved << "3 " << f[0] << ' ' << f[1] << ' ' << f[2] << '\n';
+    write("moved.off", moved.str());
+  }
   write("values.txt", "1 2\n");
   const std::vector<Case> cases = {
       {"bake " + cow, 1, "has no vertex or face colours"},
@@ -141,6 +151,7 @@ TEST_F(Tool, BakeRefusesWhatItCannotBake)
       {"bake " + cow + " --values " + path("three.txt") + " --what normals", 2, "does not go with --what normals"},
       {"bake " + cow + " --what normals --from " + path("missing.off"), 1, "missing.off"},
       {"bake " + cow + " --what normals --resolution 16", 2, "do not fit in 16 x 16 texels"},
+      {"bake " + cow + " --what normals --from " + path("moved.off"), 1, "does not lie on"},
       {"bake " + cow + " --what paint", 2, "--what"},
       {"bake", 2, "mesh is required"},
   };

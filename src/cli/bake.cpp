@@ -6,6 +6,7 @@
 #include "pictures.h"
 #include "pipeline.h"
 
+#include <diffuv/correspondence/nearest_face_labels.h>
 #include <diffuv/io/atomic_file.h>
 #include <diffuv/io/read_vertex_colors.h>
 #include <diffuv/output/write_obj.h>
@@ -88,14 +89,17 @@ Bake_source gather(Input_mesh& in, std::string& what, const std::string& values_
       const double grey = high > low ? (x - low) / (high - low) : 0.5;
       s.vertex_rgb[v.idx()] = {grey, grey, grey};
     }
-    char note[160];
-    std::snprintf(note, sizeof note, "values of %s, %.6g (black) to %.6g (white)", values_path.c_str(), low, high);
+    char note[300];
+    if(high > low)
+      std::snprintf(note, sizeof note, "values of %s, %.6g (black) to %.6g (white)", values_path.c_str(), low, high);
+    else
+      std::snprintf(note, sizeof note, "values of %s, all %.6g: mid-grey", values_path.c_str(), low);
     s.note = note;
     if(rows.front().size() > 1) s.note += ", first column";
   } else if(what == "labels") {
     if(in.face_labels.empty())
-      throw diffuv::Input_error(in.path, 0, "has no regions to bake: give --labels FILE, or paint the regions into the "
-                                            "mesh file");
+      throw diffuv::Input_error(in.path, 0, "has no regions to bake: give --labels FILE (one label per face of this "
+                                            "file), or paint the regions into it (--regions-from says which paint counts)");
     s.face_color.resize(num_faces(in.mesh));
     for(Mesh::Face_index f : faces(in.mesh)) s.face_color[f.idx()] = region_color(in, in.face_labels[f.idx()]);
     s.note = "face colours of " + in.label_source;
@@ -172,6 +176,7 @@ void run_bake(Bake_cli_options& o)
   Param_options& options = o.param;
   if(!o.values.empty() && o.what.empty()) o.what = "values";
   if(o.what.empty()) o.what = "colors";
+  const std::string asked = o.what;  // names the texture, also when painted faces turn colors into labels
   if(o.what == "values" && o.values.empty())
     throw CLI::ValidationError("--what", "values needs --values FILE (one number per vertex of the mesh file)");
   if(o.what != "values" && !o.values.empty())
@@ -192,6 +197,17 @@ void run_bake(Bake_cli_options& o)
     source_options.strict_input = options.patches.strict_input;
     from = std::make_unique<Input_mesh>(read_input(o.from, source_options, Paint_reading{o.what == "labels" || o.what == "colors", true, false}));
     data = gather(*from, o.what, o.values);
+    // Closest points mean something only where MESH lies on --from's surface.
+    diffuv::Nearest_face_report lying;
+    diffuv::nearest_face_labels(from->mesh, std::vector<int>(num_faces(from->mesh), 0), in.mesh, &lying);
+    if(!lying.lies_on_source()) {
+      char what[300];
+      std::snprintf(what, sizeof what,
+                    "does not lie on %s (the median distance from its faces to it is %.2f %% of its bounding-box "
+                    "diagonal, more than 1 %%): --from takes the data of a mesh of the same object in the same place",
+                    o.from.c_str(), 100. * lying.median_fraction());
+      throw diffuv::Input_error(in.path, 0, what);
+    }
     stages.done("read --from", count_text(from->report.vertices, "vertex", "vertices"));
   }
 
@@ -236,7 +252,7 @@ void run_bake(Bake_cli_options& o)
 
   // Everything is computed before anything is written: all files or none.
   const std::string stem = output_name(in.path, "");
-  const std::string png_name = output_name(in.path, "." + o.what + ".png");
+  const std::string png_name = output_name(in.path, "." + asked + ".png");
   std::ostringstream png;
   diffuv::write_png(png, baked.image, png_name);
   diffuv::Output_folder out(options.output, {in.path, o.from, o.values, options.patches.labels});
@@ -314,8 +330,8 @@ void add_bake_command(CLI::App& app)
                   "to its highest value). Default: values with --values, else colors")
       ->check(CLI::IsMember({"colors", "normals", "labels", "values"}));
   cmd->add_option("--values", options->values,
-                  "Per-vertex numbers to bake (one row per point of the mesh file, or of --from's; the first column is "
-                  "baked; # starts a comment)");
+                  "Per-vertex numbers to bake: one row per point of the mesh file they belong to (with --from, of "
+                  "--from's file), numbers separated by spaces, the first column baked; # starts a comment");
   cmd->add_option("--from", options->from,
                   "Take what is baked from this mesh (e.g. a high-resolution scan of the same object, in the same "
                   "place): each texel's point on MESH takes the data at its closest point on this mesh");

@@ -108,9 +108,10 @@ Baked_texture bake_texture(const TriangleMesh& tm, TextureMap corner_texture, co
   const int S = options.size;
   const std::size_t texels = std::size_t(S) * std::size_t(S);
 
-  // First where each texel's value comes from (cheap, one thread), then the
-  // samples (the costly part with a closest-point sampler), in parallel:
-  // the faces' texels, then the vertices' texels over them.
+  // Where each texel's value comes from is found on one thread (cheap);
+  // the samples (the costly part with a closest-point sampler) are taken in
+  // parallel, a batch of texels at a time so that memory stays small: the
+  // faces' texels, then the vertices' texels over them.
   struct Texel_job {
     std::uint32_t texel;
     face_descriptor face;
@@ -124,48 +125,63 @@ Baked_texture bake_texture(const TriangleMesh& tm, TextureMap corner_texture, co
     double x, y;
   };
   std::vector<Corner> corners;
-  double covered_area = 0.;
-  for(int round = 0; round < 2; ++round) {
-    // Round 0 measures the faces' area in texels, to reserve the jobs at once.
-    if(round == 1) face_jobs.reserve(std::size_t(covered_area * 1.05) + 1024);
-    for(face_descriptor f : faces(tm)) {
-      const halfedge_descriptor h0 = halfedge(f, tm);
-      const halfedge_descriptor hs[3] = {h0, next(h0, tm), next(next(h0, tm), tm)};
-      double x[3], y[3];
-      bool finite = true;
-      for(int i = 0; i < 3; ++i) {
-        const auto t = get(corner_texture, hs[i]);
-        x[i] = CGAL::to_double(t.x()) * S;
-        y[i] = (1. - CGAL::to_double(t.y())) * S;  // image rows go down
-        finite = finite && std::isfinite(x[i]) && std::isfinite(y[i]);
-      }
-      if(!finite) continue;
-      const double area = (x[1] - x[0]) * (y[2] - y[0]) - (x[2] - x[0]) * (y[1] - y[0]);
-      if(!(std::abs(area) > 1e-12)) continue;
-      if(round == 0) {
-        covered_area += 0.5 * std::abs(area);
-        continue;
-      }
-      for(int i = 0; i < 3; ++i) corners.push_back(Corner{f, i, x[i], y[i]});
-      const int x0 = (std::max)(0, int(std::floor((std::min)({x[0], x[1], x[2]}) - 0.5)));
-      const int x1 = (std::min)(S - 1, int(std::ceil((std::max)({x[0], x[1], x[2]}) - 0.5)));
-      const int y0 = (std::max)(0, int(std::floor((std::min)({y[0], y[1], y[2]}) - 0.5)));
-      const int y1 = (std::min)(S - 1, int(std::ceil((std::max)({y[0], y[1], y[2]}) - 0.5)));
-      for(int py = y0; py <= y1; ++py)
-        for(int px = x0; px <= x1; ++px) {
-          const double qx = px + 0.5, qy = py + 0.5;
-          const double w0 = ((x[1] - qx) * (y[2] - qy) - (x[2] - qx) * (y[1] - qy)) / area;
-          const double w1 = ((x[2] - qx) * (y[0] - qy) - (x[0] - qx) * (y[2] - qy)) / area;
-          const double w2 = 1. - w0 - w1;
-          if(w0 < -1e-9 || w1 < -1e-9 || w2 < -1e-9) continue;
-          const std::size_t texel = std::size_t(py) * S + px;
-          // A texel on an edge of two faces is taken once.
-          if(source[texel] == Texel_source::face) continue;
-          source[texel] = Texel_source::face;
-          face_jobs.push_back(Texel_job{std::uint32_t(texel), f, float(w0), float(w1)});
-        }
+  Baked_texture baked;
+  baked.image = Image(S, S, options.background);
+  std::vector<unsigned char>& rgb = baked.image.rgb;
+  auto run = [&](const std::vector<Texel_job>& jobs, std::size_t begin, std::size_t end) {
+    for(std::size_t j = begin; j < end; ++j) {
+      const Texel_job& job = jobs[j];
+      const Rgb c = sample(job.face, std::array<double, 3>{double(job.w0), double(job.w1), 1. - double(job.w0) - double(job.w1)});
+      unsigned char* out = &rgb[3 * std::size_t(job.texel)];
+      for(int k = 0; k < 3; ++k) out[k] = internal::unit_to_byte(c[std::size_t(k)]);
     }
+  };
+  auto flush = [&](std::vector<Texel_job>& jobs) {
+#ifdef CGAL_LINKED_WITH_TBB
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, jobs.size(), 4096),
+                      [&](const tbb::blocked_range<std::size_t>& r) { run(jobs, r.begin(), r.end()); });
+#else
+    run(jobs, 0, jobs.size());
+#endif
+    jobs.clear();
+  };
+  constexpr std::size_t batch = std::size_t(1) << 20;
+  face_jobs.reserve(batch);
+  for(face_descriptor f : faces(tm)) {
+    const halfedge_descriptor h0 = halfedge(f, tm);
+    const halfedge_descriptor hs[3] = {h0, next(h0, tm), next(next(h0, tm), tm)};
+    double x[3], y[3];
+    bool finite = true;
+    for(int i = 0; i < 3; ++i) {
+      const auto t = get(corner_texture, hs[i]);
+      x[i] = CGAL::to_double(t.x()) * S;
+      y[i] = (1. - CGAL::to_double(t.y())) * S;  // image rows go down
+      finite = finite && std::isfinite(x[i]) && std::isfinite(y[i]);
+    }
+    if(!finite) continue;
+    const double area = (x[1] - x[0]) * (y[2] - y[0]) - (x[2] - x[0]) * (y[1] - y[0]);
+    if(!(std::abs(area) > 1e-12)) continue;
+    for(int i = 0; i < 3; ++i) corners.push_back(Corner{f, i, x[i], y[i]});
+    const int x0 = (std::max)(0, int(std::floor((std::min)({x[0], x[1], x[2]}) - 0.5)));
+    const int x1 = (std::min)(S - 1, int(std::ceil((std::max)({x[0], x[1], x[2]}) - 0.5)));
+    const int y0 = (std::max)(0, int(std::floor((std::min)({y[0], y[1], y[2]}) - 0.5)));
+    const int y1 = (std::min)(S - 1, int(std::ceil((std::max)({y[0], y[1], y[2]}) - 0.5)));
+    for(int py = y0; py <= y1; ++py)
+      for(int px = x0; px <= x1; ++px) {
+        const double qx = px + 0.5, qy = py + 0.5;
+        const double w0 = ((x[1] - qx) * (y[2] - qy) - (x[2] - qx) * (y[1] - qy)) / area;
+        const double w1 = ((x[2] - qx) * (y[0] - qy) - (x[0] - qx) * (y[2] - qy)) / area;
+        const double w2 = 1. - w0 - w1;
+        if(w0 < -1e-9 || w1 < -1e-9 || w2 < -1e-9) continue;
+        const std::size_t texel = std::size_t(py) * S + px;
+        // A texel on an edge of two faces is taken once.
+        if(source[texel] == Texel_source::face) continue;
+        source[texel] = Texel_source::face;
+        face_jobs.push_back(Texel_job{std::uint32_t(texel), f, float(w0), float(w1)});
+      }
+    if(face_jobs.size() >= batch) flush(face_jobs);
   }
+  flush(face_jobs);
   if(options.pin_vertices) {
     // The bilinear footprint of a point: the texels whose centres are the
     // corners of the texel-sized square around it. A texel in two
@@ -189,59 +205,57 @@ Baked_texture bake_texture(const TriangleMesh& tm, TextureMap corner_texture, co
       });
   }
 
-  Baked_texture baked;
-  baked.image = Image(S, S, options.background);
-  std::vector<unsigned char>& rgb = baked.image.rgb;
-  auto run = [&](const std::vector<Texel_job>& jobs, std::size_t begin, std::size_t end) {
-    for(std::size_t j = begin; j < end; ++j) {
-      const Texel_job& job = jobs[j];
-      const Rgb c = sample(job.face, std::array<double, 3>{double(job.w0), double(job.w1), 1. - double(job.w0) - double(job.w1)});
-      unsigned char* out = &rgb[3 * std::size_t(job.texel)];
-      for(int k = 0; k < 3; ++k) out[k] = internal::unit_to_byte(c[std::size_t(k)]);
-    }
-  };
-  for(const std::vector<Texel_job>* jobs : {&face_jobs, &vertex_jobs}) {
-#ifdef CGAL_LINKED_WITH_TBB
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, jobs->size(), 4096),
-                      [&](const tbb::blocked_range<std::size_t>& r) { run(*jobs, r.begin(), r.end()); });
-#else
-    run(*jobs, 0, jobs->size());
-#endif
-  }
+  flush(vertex_jobs);
 
   // Dilation: each pass gives every empty texel next to a filled one (8
-  // neighbours) the mean of its filled neighbours as they were before the pass.
-  std::vector<std::size_t> frontier;
-  std::vector<std::array<unsigned char, 3>> fill;
-  for(int pass = 0; pass < options.dilation; ++pass) {
-    frontier.clear();
-    fill.clear();
-    for(int py = 0; py < S; ++py)
-      for(int px = 0; px < S; ++px) {
-        const std::size_t texel = std::size_t(py) * S + px;
-        if(source[texel] != Texel_source::background) continue;
-        double sum[3] = {0., 0., 0.};
-        int n = 0;
-        for(int dy = -1; dy <= 1; ++dy)
-          for(int dx = -1; dx <= 1; ++dx) {
-            const int nx = px + dx, ny = py + dy;
-            if((dx == 0 && dy == 0) || nx < 0 || ny < 0 || nx >= S || ny >= S) continue;
-            const std::size_t neighbour = std::size_t(ny) * S + nx;
-            if(source[neighbour] == Texel_source::background) continue;
-            for(int k = 0; k < 3; ++k) sum[k] += rgb[3 * neighbour + std::size_t(k)];
-            ++n;
-          }
-        if(n == 0) continue;
-        frontier.push_back(texel);
-        fill.push_back({static_cast<unsigned char>(std::lround(sum[0] / n)),
-                        static_cast<unsigned char>(std::lround(sum[1] / n)),
-                        static_cast<unsigned char>(std::lround(sum[2] / n))});
+  // neighbours) the mean of its filled neighbours as they were before the
+  // pass. Only the texels next to the last pass's are looked at.
+  auto for_neighbours = [S](std::size_t texel, auto visit) {
+    const int px = int(texel % std::size_t(S)), py = int(texel / std::size_t(S));
+    for(int dy = -1; dy <= 1; ++dy)
+      for(int dx = -1; dx <= 1; ++dx) {
+        const int nx = px + dx, ny = py + dy;
+        if((dx != 0 || dy != 0) && nx >= 0 && ny >= 0 && nx < S && ny < S) visit(std::size_t(ny) * S + nx);
       }
-    if(frontier.empty()) break;
-    for(std::size_t i = 0; i < frontier.size(); ++i) {
-      source[frontier[i]] = Texel_source::gutter;
-      for(int k = 0; k < 3; ++k) rgb[3 * frontier[i] + std::size_t(k)] = fill[i][std::size_t(k)];
+  };
+  std::vector<std::size_t> candidates, next_candidates;
+  std::vector<char> listed(options.dilation > 0 ? texels : 0, 0);
+  if(options.dilation > 0)
+    for(std::size_t texel = 0; texel < texels; ++texel)
+      if(source[texel] == Texel_source::background) {
+        bool next_to_filled = false;
+        for_neighbours(texel, [&](std::size_t n) { next_to_filled = next_to_filled || source[n] != Texel_source::background; });
+        if(next_to_filled) {
+          candidates.push_back(texel);
+          listed[texel] = 1;
+        }
+      }
+  std::vector<std::array<unsigned char, 3>> fill;
+  for(int pass = 0; pass < options.dilation && !candidates.empty(); ++pass) {
+    fill.resize(candidates.size());
+    for(std::size_t i = 0; i < candidates.size(); ++i) {
+      double sum[3] = {0., 0., 0.};
+      int n = 0;
+      for_neighbours(candidates[i], [&](std::size_t m) {
+        if(source[m] == Texel_source::background) return;
+        for(int k = 0; k < 3; ++k) sum[k] += rgb[3 * m + std::size_t(k)];
+        ++n;
+      });
+      for(int k = 0; k < 3; ++k) fill[i][std::size_t(k)] = static_cast<unsigned char>(std::lround(sum[k] / n));
     }
+    next_candidates.clear();
+    for(std::size_t i = 0; i < candidates.size(); ++i) {
+      source[candidates[i]] = Texel_source::gutter;
+      for(int k = 0; k < 3; ++k) rgb[3 * candidates[i] + std::size_t(k)] = fill[i][std::size_t(k)];
+    }
+    for(std::size_t texel : candidates)
+      for_neighbours(texel, [&](std::size_t n) {
+        if(source[n] == Texel_source::background && !listed[n]) {
+          listed[n] = 1;
+          next_candidates.push_back(n);
+        }
+      });
+    candidates.swap(next_candidates);
   }
   for(Texel_source s : source) {
     if(s == Texel_source::face) ++baked.face_texels;
