@@ -2,7 +2,8 @@
 # The test suite built with AddressSanitizer and UndefinedBehaviorSanitizer
 # (a separate build folder, clang++ by default). Any report fails the run.
 # Leaves out the sweep and the install-consumer test, and builds no tool, so
-# the CLI tests (test_cli_*.cpp) skip here: they run in the normal build. The
+# the tests that run the tool (test_cli_*.cpp but test_cli_text.cpp) are not
+# compiled here (test/CMakeLists.txt): they run in the normal build. The
 # instrumented tool compiled as long as the whole instrumented suite (measured
 # 2026-12-02: about 1,200 s of CPU each), for code that the library tests and
 # the fuzz targets (scripts/fuzz.sh: the readers and the whole pipeline)
