@@ -307,9 +307,7 @@ void run_bake(Bake_cli_options& o)
               << "\n";
   }
   std::cout << "stages: " << stages.summary() << "\n";
-  std::cout << "wrote";
-  for(const auto& p : out.paths()) std::cout << ' ' << p;
-  std::cout << "\n";
+  std::cout << wrote_line(out.paths()) << "\n";
 }
 
 } // namespace

@@ -81,6 +81,14 @@ inline std::vector<std::string> split_list(const std::string& text)
   return items;
 }
 
+/// The line every command ends with: "wrote" and the files written.
+inline std::string wrote_line(const std::vector<std::string>& paths)
+{
+  std::string line = "wrote";
+  for(const std::string& p : paths) line += ' ' + p;
+  return line;
+}
+
 /// The name of an output file: the mesh file's stem and an ending, with the
 /// part of the ending that the stem already ends with written once. The
 /// ending's parts are split at its dots: cow.off and `.patches.txt` give

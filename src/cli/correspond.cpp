@@ -302,9 +302,7 @@ void run_correspond(const Correspond_options& o)
             << (o.transfer_labels && transfer_ms > 0 ? "transfer labels " + std::to_string(std::lround(transfer_ms)) + " ms, " : "")
             << "parameterize A " << std::lround(param_a_ms)
             << " ms, B " << std::lround(param_b_ms) << " ms, map " << std::lround(map_ms) << " ms, write "
-            << std::lround(write_ms) << " ms\nwrote";
-  for(const auto& p : out.paths()) std::cout << ' ' << p;
-  std::cout << '\n';
+            << std::lround(write_ms) << " ms\n" << wrote_line(out.paths()) << '\n';
 }
 
 } // namespace

@@ -145,9 +145,7 @@ void print_param_report(const Param_run& run, const Param_options& options)
             << Stage_clock::duration(patch_ms) << (options.threads == 1 ? "" : " over all threads") << '\n';
   if(!run.atlas_line.empty()) std::cout << run.atlas_line << '\n';
   std::cout << "stages: " << run.stages.summary() << '\n';
-  std::cout << "wrote";
-  for(const auto& p : run.written) std::cout << ' ' << p;
-  std::cout << '\n';
+  std::cout << wrote_line(run.written) << '\n';
 }
 
 } // namespace diffuv_cli

@@ -74,9 +74,7 @@ void run_segment(const Segment_options& options)
             << "; "
             << patching_clause(report, options.patches);
   if(!report.not_discs.empty()) std::cout << "; " << count_text(report.not_discs.size(), "not a disc", "not discs");
-  std::cout << "\nwrote";
-  for(const auto& p : out.paths()) std::cout << ' ' << p;
-  std::cout << '\n';
+  std::cout << '\n' << wrote_line(out.paths()) << '\n';
   warn_of_zero_area_faces(in);
 }
 

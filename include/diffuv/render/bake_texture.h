@@ -162,23 +162,13 @@ Baked_texture bake_texture(const TriangleMesh& tm, TextureMap corner_texture, co
     const double area = (x[1] - x[0]) * (y[2] - y[0]) - (x[2] - x[0]) * (y[1] - y[0]);
     if(!(std::abs(area) > 1e-12)) continue;
     for(int i = 0; i < 3; ++i) corners.push_back(Corner{f, i, x[i], y[i]});
-    const int x0 = (std::max)(0, int(std::floor((std::min)({x[0], x[1], x[2]}) - 0.5)));
-    const int x1 = (std::min)(S - 1, int(std::ceil((std::max)({x[0], x[1], x[2]}) - 0.5)));
-    const int y0 = (std::max)(0, int(std::floor((std::min)({y[0], y[1], y[2]}) - 0.5)));
-    const int y1 = (std::min)(S - 1, int(std::ceil((std::max)({y[0], y[1], y[2]}) - 0.5)));
-    for(int py = y0; py <= y1; ++py)
-      for(int px = x0; px <= x1; ++px) {
-        const double qx = px + 0.5, qy = py + 0.5;
-        const double w0 = ((x[1] - qx) * (y[2] - qy) - (x[2] - qx) * (y[1] - qy)) / area;
-        const double w1 = ((x[2] - qx) * (y[0] - qy) - (x[0] - qx) * (y[2] - qy)) / area;
-        const double w2 = 1. - w0 - w1;
-        if(w0 < -1e-9 || w1 < -1e-9 || w2 < -1e-9) continue;
-        const std::size_t texel = std::size_t(py) * S + px;
-        // A texel on an edge of two faces is taken once.
-        if(source[texel] == Texel_source::face) continue;
-        source[texel] = Texel_source::face;
-        face_jobs.push_back(Texel_job{std::uint32_t(texel), f, float(w0), float(w1)});
-      }
+    internal::for_each_pixel_in_triangle(x, y, area, S, S, 1e-9, [&](int px, int py, double w0, double w1, double) {
+      const std::size_t texel = std::size_t(py) * S + px;
+      // A texel on an edge of two faces is taken once.
+      if(source[texel] == Texel_source::face) return;
+      source[texel] = Texel_source::face;
+      face_jobs.push_back(Texel_job{std::uint32_t(texel), f, float(w0), float(w1)});
+    });
     if(face_jobs.size() >= batch) flush(face_jobs);
   }
   flush(face_jobs);
@@ -266,6 +256,26 @@ Baked_texture bake_texture(const TriangleMesh& tm, TextureMap corner_texture, co
   return baked;
 }
 
+namespace internal {
+
+/// The sum over the corners of triangle `f` (from `halfedge(f, tm)` on) of
+/// `w[i] * value(vertex of corner i)`, `value` giving 3 numbers.
+template <class TriangleMesh, class Value>
+std::array<double, 3> weighted_corner_sum(const TriangleMesh& tm,
+                                          typename boost::graph_traits<TriangleMesh>::face_descriptor f,
+                                          const std::array<double, 3>& w, Value value)
+{
+  auto h = halfedge(f, tm);
+  std::array<double, 3> sum{0., 0., 0.};
+  for(std::size_t i = 0; i < 3; ++i, h = next(h, tm)) {
+    const std::array<double, 3> x = value(target(h, tm));
+    for(std::size_t k = 0; k < 3; ++k) sum[k] += w[i] * x[k];
+  }
+  return sum;
+}
+
+} // namespace internal
+
 /// A sampler for `bake_texture()`: per-vertex colours (`values`: vertex -> `Rgb`)
 /// interpolated linearly across each face.
 template <class TriangleMesh, class VertexRgbMap>
@@ -273,13 +283,7 @@ auto vertex_value_sampler(const TriangleMesh& tm, VertexRgbMap values)
 {
   using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
   return [&tm, values](face_descriptor f, const std::array<double, 3>& w) {
-    auto h = halfedge(f, tm);
-    Rgb c{0., 0., 0.};
-    for(int i = 0; i < 3; ++i, h = next(h, tm)) {
-      const Rgb value = get(values, target(h, tm));
-      for(int k = 0; k < 3; ++k) c[std::size_t(k)] += w[std::size_t(i)] * value[std::size_t(k)];
-    }
-    return c;
+    return internal::weighted_corner_sum(tm, f, w, [&](auto v) { return Rgb(get(values, v)); });
   };
 }
 
@@ -291,14 +295,10 @@ auto vertex_normal_sampler(const TriangleMesh& tm, VertexNormalMap normals)
 {
   using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
   return [&tm, normals](face_descriptor f, const std::array<double, 3>& w) {
-    auto h = halfedge(f, tm);
-    double n[3] = {0., 0., 0.};
-    for(int i = 0; i < 3; ++i, h = next(h, tm)) {
-      const auto normal = get(normals, target(h, tm));
-      n[0] += w[std::size_t(i)] * CGAL::to_double(normal.x());
-      n[1] += w[std::size_t(i)] * CGAL::to_double(normal.y());
-      n[2] += w[std::size_t(i)] * CGAL::to_double(normal.z());
-    }
+    const std::array<double, 3> n = internal::weighted_corner_sum(tm, f, w, [&](auto v) {
+      const auto normal = get(normals, v);
+      return std::array<double, 3>{CGAL::to_double(normal.x()), CGAL::to_double(normal.y()), CGAL::to_double(normal.z())};
+    });
     const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
     if(!(length > 0.)) return Rgb{0.5, 0.5, 0.5};
     return Rgb{0.5 * (n[0] / length + 1.), 0.5 * (n[1] / length + 1.), 0.5 * (n[2] / length + 1.)};
@@ -329,14 +329,10 @@ public:
 
   Rgb operator()(face_descriptor f, const std::array<double, 3>& w) const
   {
-    auto h = halfedge(f, *tm_);
-    double p[3] = {0., 0., 0.};
-    for(int i = 0; i < 3; ++i, h = next(h, *tm_)) {
-      const auto& q = get(vpm_, target(h, *tm_));
-      p[0] += w[std::size_t(i)] * CGAL::to_double(q.x());
-      p[1] += w[std::size_t(i)] * CGAL::to_double(q.y());
-      p[2] += w[std::size_t(i)] * CGAL::to_double(q.z());
-    }
+    const std::array<double, 3> p = internal::weighted_corner_sum(*tm_, f, w, [&](auto v) {
+      const auto& q = get(vpm_, v);
+      return std::array<double, 3>{CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z())};
+    });
     const auto nearest = tree_->closest_point_and_primitive(Point_3(p[0], p[1], p[2]));
     const auto g = nearest.second;
     // The closest point's weights in g: from the areas of the sub-triangles,

@@ -263,6 +263,30 @@ inline double isoline_pixel_distance(double t, int n, double gradient_length)
   return d / gradient_length;
 }
 
+/// Calls `visit(px, py, w0, w1, w2)` for every pixel of a `width` x `height`
+/// image whose centre (px + 0.5, py + 0.5) lies in the triangle (x[i], y[i])
+/// (pixel units, either orientation, `twice_area` its signed doubled area,
+/// not zero), with the centre's barycentric weights; a centre on an edge
+/// (within `eps` of it, in weight) counts as inside.
+template <class Visit>
+void for_each_pixel_in_triangle(const double* x, const double* y, double twice_area, int width, int height,
+                                double eps, Visit visit)
+{
+  const int x0 = (std::max)(0, int(std::floor((std::min)({x[0], x[1], x[2]}) - 0.5)));
+  const int x1 = (std::min)(width - 1, int(std::ceil((std::max)({x[0], x[1], x[2]}) - 0.5)));
+  const int y0 = (std::max)(0, int(std::floor((std::min)({y[0], y[1], y[2]}) - 0.5)));
+  const int y1 = (std::min)(height - 1, int(std::ceil((std::max)({y[0], y[1], y[2]}) - 0.5)));
+  for(int py = y0; py <= y1; ++py)
+    for(int px = x0; px <= x1; ++px) {
+      const double qx = px + 0.5, qy = py + 0.5;
+      const double w0 = ((x[1] - qx) * (y[2] - qy) - (x[2] - qx) * (y[1] - qy)) / twice_area;
+      const double w1 = ((x[2] - qx) * (y[0] - qy) - (x[0] - qx) * (y[2] - qy)) / twice_area;
+      const double w2 = 1. - w0 - w1;
+      if(w0 < -eps || w1 < -eps || w2 < -eps) continue;
+      visit(px, py, w0, w1, w2);
+    }
+}
+
 } // namespace internal
 
 /// Renders `tm` seen from the camera of `options` into a new image.
@@ -391,36 +415,25 @@ Image render_mesh(const TriangleMesh& tm, VertexPointMap vpm, FaceColor face_col
         grad_v = internal::gradient_length(sx, sy, v, area);
       }
 
-      const int x0 = (std::max)(0, int(std::floor((std::min)({s[0].x, s[1].x, s[2].x}) - 0.5)));
-      const int x1 = (std::min)(W - 1, int(std::ceil((std::max)({s[0].x, s[1].x, s[2].x}) - 0.5)));
-      const int y0 = (std::max)(0, int(std::floor((std::min)({s[0].y, s[1].y, s[2].y}) - 0.5)));
-      const int y1 = (std::min)(H - 1, int(std::ceil((std::max)({s[0].y, s[1].y, s[2].y}) - 0.5)));
-      const double eps = 1e-9;
-      for(int py = y0; py <= y1; ++py)
-        for(int px = x0; px <= x1; ++px) {
-          const double qx = px + 0.5, qy = py + 0.5;
-          // Barycentric coordinates from the edge functions (either orientation).
-          const double w0 = ((s[1].x - qx) * (s[2].y - qy) - (s[2].x - qx) * (s[1].y - qy)) / area;
-          const double w1 = ((s[2].x - qx) * (s[0].y - qy) - (s[0].x - qx) * (s[2].y - qy)) / area;
-          const double w2 = 1. - w0 - w1;
-          if(w0 < -eps || w1 < -eps || w2 < -eps) continue;
-          const double z = w0 * s[0].z + w1 * s[1].z + w2 * s[2].z;
-          double& zb = depth[std::size_t(py) * std::size_t(W) + std::size_t(px)];
-          if(!(z > zb)) continue;
-          zb = z;
-          Color c = shaded;
-          if(has_uv && options.texture) {
-            const Rgb t = sample_bilinear(*options.texture, w0 * u[0] + w1 * u[1] + w2 * u[2],
-                                          w0 * v[0] + w1 * v[1] + w2 * v[2]);
-            c = Color{internal::to_byte(255. * t[0] * shade), internal::to_byte(255. * t[1] * shade),
-                      internal::to_byte(255. * t[2] * shade)};
-          } else if(has_uv) {
-            const double du = internal::isoline_pixel_distance(w0 * u[0] + w1 * u[1] + w2 * u[2], N, grad_u);
-            const double dv = internal::isoline_pixel_distance(w0 * v[0] + w1 * v[1] + w2 * v[2], N, grad_v);
-            if(du <= half_width || dv <= half_width) c = du <= dv ? options.u_line_color : options.v_line_color;
-          }
-          image.set(px, py, c);
+      const double sx[3] = {s[0].x, s[1].x, s[2].x}, sy[3] = {s[0].y, s[1].y, s[2].y};
+      internal::for_each_pixel_in_triangle(sx, sy, area, W, H, 1e-9, [&](int px, int py, double w0, double w1, double w2) {
+        const double z = w0 * s[0].z + w1 * s[1].z + w2 * s[2].z;
+        double& zb = depth[std::size_t(py) * std::size_t(W) + std::size_t(px)];
+        if(!(z > zb)) return;
+        zb = z;
+        Color c = shaded;
+        if(has_uv && options.texture) {
+          const Rgb t = sample_bilinear(*options.texture, w0 * u[0] + w1 * u[1] + w2 * u[2],
+                                        w0 * v[0] + w1 * v[1] + w2 * v[2]);
+          c = Color{internal::to_byte(255. * t[0] * shade), internal::to_byte(255. * t[1] * shade),
+                    internal::to_byte(255. * t[2] * shade)};
+        } else if(has_uv) {
+          const double du = internal::isoline_pixel_distance(w0 * u[0] + w1 * u[1] + w2 * u[2], N, grad_u);
+          const double dv = internal::isoline_pixel_distance(w0 * v[0] + w1 * v[1] + w2 * v[2], N, grad_v);
+          if(du <= half_width || dv <= half_width) c = du <= dv ? options.u_line_color : options.v_line_color;
         }
+        image.set(px, py, c);
+      });
     }
   }
   return image;

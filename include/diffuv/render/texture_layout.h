@@ -73,25 +73,15 @@ Image render_texture_layout(const TriangleMesh& tm, TextureMap corner_texture, F
         grad_u = internal::gradient_length(x, y, u, area);
         grad_v = internal::gradient_length(x, y, v, area);
       }
-      const int x0 = (std::max)(0, int(std::floor((std::min)({x[0], x[1], x[2]}) - 0.5)));
-      const int x1 = (std::min)(S - 1, int(std::ceil((std::max)({x[0], x[1], x[2]}) - 0.5)));
-      const int y0 = (std::max)(0, int(std::floor((std::min)({y[0], y[1], y[2]}) - 0.5)));
-      const int y1 = (std::min)(S - 1, int(std::ceil((std::max)({y[0], y[1], y[2]}) - 0.5)));
-      for(int py = y0; py <= y1; ++py)
-        for(int px = x0; px <= x1; ++px) {
-          const double qx = px + 0.5, qy = py + 0.5;
-          const double w0 = ((x[1] - qx) * (y[2] - qy) - (x[2] - qx) * (y[1] - qy)) / area;
-          const double w1 = ((x[2] - qx) * (y[0] - qy) - (x[0] - qx) * (y[2] - qy)) / area;
-          const double w2 = 1. - w0 - w1;
-          if(w0 < -1e-9 || w1 < -1e-9 || w2 < -1e-9) continue;
-          Color c = base;
-          if(lines) {
-            const double du = internal::isoline_pixel_distance(w0 * u[0] + w1 * u[1] + w2 * u[2], N, grad_u);
-            const double dv = internal::isoline_pixel_distance(w0 * v[0] + w1 * v[1] + w2 * v[2], N, grad_v);
-            if(du <= 0.5 || dv <= 0.5) c = du <= dv ? options.u_line_color : options.v_line_color;
-          }
-          image.set(px, py, c);
+      internal::for_each_pixel_in_triangle(x, y, area, S, S, 1e-9, [&](int px, int py, double w0, double w1, double w2) {
+        Color c = base;
+        if(lines) {
+          const double du = internal::isoline_pixel_distance(w0 * u[0] + w1 * u[1] + w2 * u[2], N, grad_u);
+          const double dv = internal::isoline_pixel_distance(w0 * v[0] + w1 * v[1] + w2 * v[2], N, grad_v);
+          if(du <= 0.5 || dv <= 0.5) c = du <= dv ? options.u_line_color : options.v_line_color;
         }
+        image.set(px, py, c);
+      });
     }
   }
   return image;
