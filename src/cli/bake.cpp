@@ -17,7 +17,6 @@
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <functional>
 #include <iostream>
@@ -166,11 +165,6 @@ Read_back_check check_read_back(const Mesh& mesh, CornerMap corner, const diffuv
   return check;
 }
 
-double ms_between(std::chrono::steady_clock::time_point a, std::chrono::steady_clock::time_point b)
-{
-  return std::chrono::duration<double, std::milli>(b - a).count();
-}
-
 void run_bake(Bake_cli_options& o)
 {
   Param_options& options = o.param;
@@ -237,7 +231,6 @@ void run_bake(Bake_cli_options& o)
   stages.done("pack");
   const auto corner = diffuv::packed_corner_map(atlas, packing);
 
-  const auto bake_start = std::chrono::steady_clock::now();
   diffuv::Bake_options baking;
   baking.size = options.texture_size;
   baking.dilation = o.dilation;
@@ -247,8 +240,8 @@ void run_bake(Bake_cli_options& o)
   const diffuv::Baked_texture baked =
       from ? diffuv::bake_texture(in.mesh, corner, diffuv::closest_point_sampler(in.mesh, in.mesh.points(), from->mesh, own), baking)
            : diffuv::bake_texture(in.mesh, corner, own, baking);
-  const double bake_ms = ms_between(bake_start, std::chrono::steady_clock::now());
   stages.done("bake");
+  const double bake_ms = stages.stages.back().second;
 
   // Everything is computed before anything is written: all files or none.
   const std::string stem = output_name(in.path, "");
