@@ -6,7 +6,7 @@
 #include <diffuv/io/read_labels.h>
 #include <diffuv/io/read_mesh.h>
 #include <diffuv/parameterization/parameterize_patches.h>
-#include <diffuv/layout/disc_patches.h>
+#include <diffuv/parameterization/diffusion_patches.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -49,7 +49,7 @@ int main(int argc, char** argv)
 
   diffuv::Segmentation<Mesh> seg;
   diffuv::Patching_report patching;
-  const diffuv::Status status = diffuv::disc_patches(mesh, mesh.points(), labels, seg, {}, &patching);
+  const diffuv::Status status = diffuv::diffusion_patches(mesh, labels, seg, {}, &patching);
   if(!status) {
     std::cerr << "Error: " << status.what() << std::endl;
     return EXIT_FAILURE;

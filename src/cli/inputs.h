@@ -15,7 +15,7 @@
 #include <diffuv/io/read_mesh.h>
 #include <diffuv/io/selection_file.h>
 #include <diffuv/internal/message_text.h>
-#include <diffuv/parameterization/layout_judge.h>
+#include <diffuv/parameterization/diffusion_patches.h>
 #include <diffuv/layout/disc_patches.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -343,9 +343,9 @@ inline diffuv::Segmentation<Mesh> make_patches(const Input_mesh& in, const Patch
   if(o.patches > 0) options.discs = diffuv::Disc_components::laid_out;
   diffuv::Raw_map_judge_options judging;
   judging.threads = o.threads;
-  const diffuv::Raw_map_judge<Mesh, decltype(in.mesh.points())> judge(in.mesh, in.mesh.points(), judging);
   diffuv::Segmentation<Mesh> seg;
-  const diffuv::Status status = diffuv::disc_patches(in.mesh, in.mesh.points(), in.face_labels, seg, options, &report, judge);
+  const diffuv::Status status =
+      diffuv::diffusion_patches(in.mesh, in.mesh.points(), in.face_labels, seg, options, &report, judging);
   if(!status && o.strict)
     throw diffuv::Input_error(in.labels_path.empty() ? in.path : in.labels_path, 0, status.what());
   // With the Voronoi layout a disc is one patch whatever the seed count: say

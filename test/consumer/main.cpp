@@ -1,8 +1,8 @@
 // The consumer test's program: uses an installed diffuv (found with
 // find_package) to parameterize a flat square grid built here, and checks the
-// result. Exits non-zero on any failure.
-#include <diffuv/atlas/Uv_atlas.h>
-#include <diffuv/parameterization/parameterize_disc.h>
+// result. Exits non-zero on any failure. The umbrella header comes first, so
+// that it is checked to compile on its own, from the installed tree.
+#include <diffuv/diffuv.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>

@@ -5,6 +5,7 @@
 #define DIFFUV_IO_PAINT_LOOK_H
 
 #include <CGAL/boost/graph/iterator.h>
+#include <CGAL/boost/graph/properties.h>
 
 #include <boost/graph/graph_traits.hpp>
 
