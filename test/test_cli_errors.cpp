@@ -94,7 +94,7 @@ TEST_F(Tool, NoSubcommandOrUnknownCommandOrEmptyOutput)
 {
   const Tool_run unknown = run("bogus");
   EXPECT_EQ(unknown.code, 2);
-  EXPECT_EQ(unknown.err, "diffuv: error: unknown command 'bogus' (commands: param, render, segment, compare, correspond, measure, bake; see diffuv --help)\n");
+  EXPECT_EQ(unknown.err, "diffuv: error: unknown command 'bogus' (commands: param, render, segment, compare, correspond, measure, bake, serve; see diffuv --help)\n");
   const Tool_run empty = run("param " + data_path("meshes/nefertiti.off") + " -o ''");
   EXPECT_EQ(empty.code, 2);
   EXPECT_NE(empty.err.find("the output folder name is empty"), std::string::npos) << empty.err;

@@ -36,6 +36,9 @@ void add_bake_command(CLI::App& app);
 /// Registers `diffuv measure`.
 void add_measure_command(CLI::App& app);
 
+/// Registers `diffuv serve` (the painter: a local web server and its page).
+void add_serve_command(CLI::App& app);
+
 } // namespace diffuv_cli
 
 #endif

@@ -23,13 +23,14 @@ int main(int argc, char** argv)
   diffuv_cli::add_correspond_command(app);
   diffuv_cli::add_measure_command(app);
   diffuv_cli::add_bake_command(app);
+  diffuv_cli::add_serve_command(app);
 
   // CLI11 reports an unknown command as a missing one; say what it is.
   if(argc > 1 && argv[1][0] != '-') {
     bool known = false;
     for(const CLI::App* sub : app.get_subcommands({})) known = known || sub->get_name() == argv[1];
     if(!known) {
-      std::cerr << "diffuv: error: unknown command '" << argv[1] << "' (commands: param, render, segment, compare, correspond, measure, bake; see diffuv --help)\n";
+      std::cerr << "diffuv: error: unknown command '" << argv[1] << "' (commands: param, render, segment, compare, correspond, measure, bake, serve; see diffuv --help)\n";
       return diffuv_cli::exit_usage;
     }
   }

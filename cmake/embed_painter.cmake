@@ -1,0 +1,17 @@
+# Writes OUTPUT, a C++ file that holds the painter page's files (share/painter/)
+# as string constants, so that `diffuv serve` needs no files of its own at run
+# time. Run with cmake -P, -DSOURCE_DIR=<share/painter> -DOUTPUT=<file.cpp>.
+set(files index.html painter.js painter.css)
+set(names painter_index_html painter_js painter_css)
+set(text "// Generated from share/painter/ by cmake/embed_painter.cmake: do not edit.\nnamespace diffuv_cli {\n")
+foreach(file name IN ZIP_LISTS files names)
+  file(READ "${SOURCE_DIR}/${file}" content)
+  string(FIND "${content}" ")diffuv_painter\"" clash)
+  if(NOT clash EQUAL -1)
+    message(FATAL_ERROR "${file} contains the raw string's delimiter )diffuv_painter\"")
+  endif()
+  string(APPEND text "extern const char* const ${name};\nconst char* const ${name} = R\"diffuv_painter(${content})diffuv_painter\";\n")
+endforeach()
+string(APPEND text "} // namespace diffuv_cli\n")
+file(WRITE "${OUTPUT}.tmp" "${text}")
+file(RENAME "${OUTPUT}.tmp" "${OUTPUT}")

@@ -1,0 +1,522 @@
+// diffuv tool: `diffuv serve`, the painter. A local web server (cpp-httplib)
+// that serves one page (share/painter/, built into the tool) and a small JSON
+// API over the library: the mesh, the layout of painted labels with its sides,
+// corners and problems, the map with its distortion, and the label file and
+// painted PLY to save (doc/painter.md).
+#include "commands.h"
+#include "inputs.h"
+#include "pipeline.h"
+
+#include <diffuv/output/write_ply.h>
+
+#include <CGAL/Bbox_3.h>
+
+#include <httplib.h>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <csignal>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <pthread.h>
+#include <set>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace diffuv_cli {
+
+// The page's files, built into the tool (painter_page.cpp, generated from share/painter/).
+extern const char* const painter_index_html;
+extern const char* const painter_js;
+extern const char* const painter_css;
+
+namespace {
+
+using json = nlohmann::json;
+
+
+struct Serve_options {
+  std::string mesh;
+  std::string labels;  // a label file for the mesh given
+  int port = 8080;
+  std::string host = "127.0.0.1";
+  std::string three_dir = "/usr/share/javascript/three";  // Debian's libjs-three
+  std::size_t threads = 0;
+  std::size_t max_request_mb = 512;  // a mesh of a few million faces as ASCII
+};
+
+// A request the server refuses: its status and message.
+struct Bad_request {
+  int status;
+  std::string message;
+};
+
+// The state of one painter session: the mesh and what it came with.
+class Painter {
+public:
+  explicit Painter(std::size_t threads) : threads_(threads) {}
+
+  void load(const std::string& path, const std::string& name, const std::string& labels = std::string())
+  {
+    Patch_cli_options o;
+    o.labels = labels;
+    Input_mesh in = read_input(path, o);
+    if(num_faces(in.mesh) == 0) throw Bad_request{400, name + ": the mesh has no faces"};
+    in.path = name;
+    mesh_ = std::make_unique<Input_mesh>(std::move(in));
+  }
+
+  bool loaded() const { return mesh_ != nullptr; }
+
+  json mesh_json() const
+  {
+    const Mesh& m = mesh().mesh;
+    json vertices = json::array(), faces = json::array();
+    CGAL::Bbox_3 box;
+    for(auto v : m.vertices()) {
+      const auto& p = m.point(v);
+      box += p.bbox();
+      vertices.push_back(p.x());
+      vertices.push_back(p.y());
+      vertices.push_back(p.z());
+    }
+    for(auto f : m.faces())
+      for(auto v : CGAL::vertices_around_face(m.halfedge(f), m)) faces.push_back(static_cast<std::size_t>(v.idx()));
+    json result = {{"name", mesh().path},
+                   {"vertices", std::move(vertices)},
+                   {"faces", std::move(faces)},
+                   {"labels", mesh().face_labels.empty() ? json(nullptr) : json(mesh().face_labels)},
+                   {"label_source", mesh().label_source},
+                   {"diagonal", std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
+                                          CGAL::square(box.zmax() - box.zmin()))}};
+    return result;
+  }
+
+  // The labels of a request body: #F integers, -1 for a face not painted;
+  // an empty array asks for automatic patches. Unpainted faces become one
+  // more region (the largest label + 1), as a label file cannot say "none".
+  std::vector<int> labels_of(const std::string& body) const
+  {
+    json request;
+    try {
+      request = json::parse(body);
+    } catch(const json::parse_error& e) {
+      throw Bad_request{400, std::string("the request is not JSON: ") + e.what()};
+    }
+    if(!request.is_object() || !request.contains("labels") || !request["labels"].is_array())
+      throw Bad_request{400, "the request has no \"labels\" array"};
+    const json& labels = request["labels"];
+    const std::size_t nf = num_faces(mesh().mesh);
+    if(labels.empty()) return {};
+    if(labels.size() != nf)
+      throw Bad_request{400, count_text(labels.size(), "label") + " for a mesh of " + count_text(nf, "face")};
+    std::vector<int> result(nf);
+    int largest = -1;
+    bool unpainted = false;
+    for(std::size_t f = 0; f < nf; ++f) {
+      const json& l = labels[f];
+      if(!l.is_number_integer() || l.get<long long>() < -1 || l.get<long long>() > 1000000)
+        throw Bad_request{400, "label " + std::to_string(f) + " is " + l.dump() + ", not an integer from -1 to 1000000"};
+      result[f] = l.get<int>();
+      largest = std::max(largest, result[f]);
+      unpainted = unpainted || result[f] < 0;
+    }
+    if(largest < 0) return {};  // nothing painted: automatic
+    if(unpainted)
+      for(int& l : result)
+        if(l < 0) l = largest + 1;
+    return result;
+  }
+
+  json layout(const std::vector<int>& labels, bool map)
+  {
+    Input_mesh& in = *mesh_;
+    // The pipeline reads the labels from the mesh; the file's own stay what
+    // GET /api/mesh answers.
+    struct Labels_swap {
+      std::vector<int>& held;
+      std::vector<int> kept;
+      ~Labels_swap() { held.swap(kept); }
+    } swap{in.face_labels, labels};
+    in.face_labels.swap(swap.kept);
+    Patch_cli_options o;
+    o.threads = threads_;
+    const auto start = std::chrono::steady_clock::now();
+    Parameterization result;
+    try {
+      result = parameterize_by_patches(in, o, "fmm", diffuv::Repair_options(), threads_);
+    } catch(const diffuv::Error& e) {
+      throw Bad_request{422, e.what()};
+    }
+    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    const Mesh& m = in.mesh;
+    const auto& seg = result.seg;
+    const std::size_t np = seg.number_of_patches();
+
+    json face_patch(std::vector<int>(num_faces(m), -1)), patch_label = json::array(), corners = json::array(),
+        sides = json::array(), problems = json::array();
+    for(std::size_t p = 0; p < np; ++p) {
+      for(auto f : seg.patch_faces[p]) face_patch[f.idx()] = static_cast<int>(p);
+      patch_label.push_back(p < seg.patch_label.size() ? seg.patch_label[p] : static_cast<int>(p));
+      const bool mapped = p < result.patches.size() && result.patches[p].status.ok();
+      if(!mapped) {
+        corners.push_back(nullptr);
+        sides.push_back(nullptr);
+        problems.push_back({{"kind", "not_mapped"},
+                            {"patch", p},
+                            {"message", p < result.patches.size() ? result.patches[p].status.what() : "no result"}});
+        continue;
+      }
+      const auto& s = result.patches[p].sides;
+      json c = json::array();
+      for(auto v : s.corners) c.push_back(static_cast<std::size_t>(v.idx()));
+      corners.push_back(c);
+      auto ids = [](const std::vector<Mesh::Vertex_index>& side) {
+        json a = json::array();
+        for(auto v : side) a.push_back(static_cast<std::size_t>(v.idx()));
+        return a;
+      };
+      sides.push_back({{"v1", ids(s.v1)}, {"u2", ids(s.u2)}, {"v2", ids(s.v2)}, {"u1", ids(s.u1)}});
+      const auto& repair = result.patches[p].repair;
+      const std::size_t moved = repair.moved_vertices + repair.moved_border_vertices;
+      if(moved > 0)
+        problems.push_back({{"kind", "repaired"},
+                            {"patch", p},
+                            {"message", "the fold repair moved " + count_text(moved, "vertex", "vertices")}});
+    }
+    const auto& r = result.patching;
+    for(std::size_t p : r.not_discs)
+      problems.push_back({{"kind", "not_a_disc"}, {"patch", p}, {"message", "not a disc"}});
+    auto note = [&](std::size_t n, const std::string& kind, const std::string& what) {
+      if(n > 0) problems.push_back({{"kind", kind}, {"patch", -1}, {"message", count_text(n, what)}});
+    };
+    note(r.merged, "merged", "patch with fewer than four boundary vertices merged into a neighbour");
+    note(r.cut, "cut", "region that is not a disc cut into discs");
+    note(r.caps_split, "cap_split", "cap split");
+    note(r.flat_triangles_handed, "flat_triangles", "face flat on one side of its patch handed to a neighbour");
+    if(r.voronoi_instead)
+      problems.push_back({{"kind", "voronoi_instead"},
+                          {"patch", -1},
+                          {"message", "the four-sided layout left a patch that is not a disc: Voronoi patches instead"}});
+
+    json out = {{"patches", np},
+                {"face_patch", std::move(face_patch)},
+                {"patch_label", std::move(patch_label)},
+                {"corners", std::move(corners)},
+                {"sides", std::move(sides)},
+                {"problems", std::move(problems)},
+                {"report",
+                 {{"automatic", r.automatic},
+                  {"merged", r.merged},
+                  {"cut", r.cut},
+                  {"caps_split", r.caps_split},
+                  {"flat_triangles_handed", r.flat_triangles_handed},
+                  {"corners_chosen", r.corners_chosen},
+                  {"voronoi_instead", r.voronoi_instead}}},
+                {"milliseconds", ms}};
+    if(!map) return out;
+
+    // The map: per-corner (u,v) on each chart's unit square, per-face distortion.
+    const Atlas& atlas = *result.atlas;
+    const auto uv = atlas.corner_uv_map();
+    json corner_uv = json::array(), face_chart = json::array();
+    for(auto f : m.faces()) {
+      const std::size_t c = atlas.chart_of(f);
+      face_chart.push_back(c == Atlas::no_chart ? -1 : static_cast<long long>(c));
+      // Corner by corner in the order of "faces": both walk from halfedge(f),
+      // and a corner's (u,v) is that of its halfedge's target.
+      for(auto h : CGAL::halfedges_around_face(m.halfedge(f), m)) {
+        const auto q = get(uv, h);
+        const bool ok = c != Atlas::no_chart && std::isfinite(q.x()) && std::isfinite(q.y());
+        corner_uv.push_back(ok ? json(q.x()) : json(nullptr));
+        corner_uv.push_back(ok ? json(q.y()) : json(nullptr));
+      }
+    }
+    const std::vector<Chart_measure> measures = measure_charts(in, result, false);
+    std::vector<double> area(num_faces(m), 1.0), stretch(num_faces(m), 1.0);
+    diffuv::Distortion_summary total;
+    std::size_t moved = 0, charts = 0;
+    for(std::size_t p = 0; p < measures.size(); ++p) {
+      if(p >= result.patches.size() || !result.patches[p].status) continue;
+      ++charts;
+      moved += result.patches[p].repair.moved_vertices + result.patches[p].repair.moved_border_vertices;
+      total = diffuv::combined(total, measures[p].summary);
+      const auto& faces = atlas.chart(result.patches[p].chart).faces;
+      for(std::size_t k = 0; k < faces.size() && k < measures[p].per_face.size(); ++k) {
+        area[faces[k].idx()] = measures[p].per_face[k].area;
+        stretch[faces[k].idx()] = measures[p].per_face[k].stretch_l2;
+      }
+    }
+    auto finite = [](double x) { return std::isfinite(x) ? json(x) : json(nullptr); };
+    json area_json = json::array(), stretch_json = json::array();
+    for(std::size_t f = 0; f < area.size(); ++f) {
+      area_json.push_back(finite(area[f]));
+      stretch_json.push_back(finite(stretch[f]));
+    }
+    out["corner_uv"] = std::move(corner_uv);
+    out["face_chart"] = std::move(face_chart);
+    out["face_area_distortion"] = std::move(area_json);
+    out["face_stretch"] = std::move(stretch_json);
+    out["summary"] = {{"charts", charts},
+                      {"l2", finite(total.stretch_l2)},
+                      {"area", finite(total.area_mean)},
+                      {"angle", finite(total.angle_mean)},
+                      {"moved", moved},
+                      {"injective", total.injective()}};
+    return out;
+  }
+
+  // The labels as the mesh file's faces carry them (one per polygon of the
+  // file, what `diffuv param MESH --labels FILE` reads).
+  std::vector<int> file_labels(const std::vector<int>& labels) const
+  {
+    const Input_mesh& in = mesh();
+    const auto& report = in.report;
+    if(labels.empty()) throw Bad_request{400, "nothing is painted: there are no labels to save"};
+    std::vector<int> by_polygon(report.faces_in_file, 0);
+    std::size_t f = 0;
+    for(auto face : in.mesh.faces()) {
+      const std::size_t polygon = f < report.file_face.size() ? report.file_face[f] : f;
+      if(polygon < by_polygon.size()) by_polygon[polygon] = labels[face.idx()];
+      ++f;
+    }
+    return by_polygon;
+  }
+
+  std::string painted_ply(const std::vector<int>& labels) const
+  {
+    if(labels.empty()) throw Bad_request{400, "nothing is painted: there is no painted mesh to save"};
+    std::ostringstream out;
+    diffuv::write_labelled_ply(out, mesh().mesh, mesh().mesh.points(), labels);
+    return out.str();
+  }
+
+  const Input_mesh& mesh() const
+  {
+    if(!mesh_) throw Bad_request{404, "no mesh is loaded: open one in the page or POST it to /api/mesh"};
+    return *mesh_;
+  }
+
+private:
+  std::size_t threads_;
+  std::unique_ptr<Input_mesh> mesh_;
+};
+
+void send_error(httplib::Response& res, int status, const std::string& message)
+{
+  res.status = status;
+  res.set_content(json{{"error", message}}.dump(), "application/json");
+}
+
+// The mesh's file name as sent by the page: a plain name with a known extension.
+std::string checked_mesh_name(const std::string& name)
+{
+  const std::string plain = std::filesystem::path(name).filename().string();
+  std::string ext = std::filesystem::path(plain).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  if(plain.empty() || plain != name || (ext != ".off" && ext != ".obj" && ext != ".ply" && ext != ".stl"))
+    throw Bad_request{400, "the mesh name '" + name + "' is not a file name ending in .off, .obj, .ply or .stl"};
+  return plain;
+}
+
+void run_server(const Serve_options& options)
+{
+  // SIGINT and SIGTERM are waited for by one thread (below), which stops the
+  // server; blocked here, before any other thread starts, so no other thread
+  // takes them.
+  sigset_t stop_signals;
+  sigemptyset(&stop_signals);
+  sigaddset(&stop_signals, SIGINT);
+  sigaddset(&stop_signals, SIGTERM);
+  pthread_sigmask(SIG_BLOCK, &stop_signals, nullptr);
+
+  Painter painter(options.threads);
+  if(!options.mesh.empty())
+    painter.load(options.mesh, std::filesystem::path(options.mesh).filename().string(), options.labels);
+  std::mutex working;  // one request at a time touches the mesh (CGAL adds property maps even to a const mesh)
+
+  // A temporary folder of this server's own, for meshes sent by the page.
+  std::filesystem::path uploads = std::filesystem::temp_directory_path() / ("diffuv-serve-" + std::to_string(::getpid()));
+
+  httplib::Server server;
+  // httplib's default also sets SO_REUSEPORT, with which a second server on
+  // the same port would start and share it silently: address reuse only.
+  server.set_socket_options([](socket_t sock) {
+    int yes = 1;
+    ::setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
+  });
+  const std::size_t max_request_mb = options.max_request_mb;
+  server.set_payload_max_length(max_request_mb << 20);
+  server.set_read_timeout(60, 0);
+  server.set_exception_handler([](const httplib::Request&, httplib::Response& res, std::exception_ptr e) {
+    try {
+      if(e) std::rethrow_exception(e);
+    } catch(const std::exception& x) {
+      send_error(res, 500, std::string("internal error: ") + x.what());
+      return;
+    } catch(...) {
+    }
+    send_error(res, 500, "internal error");
+  });
+  server.set_error_handler([max_request_mb](const httplib::Request& req, httplib::Response& res) {
+    if(!res.body.empty()) return;
+    if(res.status == 404) send_error(res, 404, "no such page: " + req.path);
+    else if(res.status == 413) send_error(res, 413, "the request is larger than " + std::to_string(max_request_mb) + " MB");
+    else send_error(res, res.status, "bad request");
+  });
+
+  // Every API call: the mesh locked, a refusal turned into its status.
+  auto api = [&](auto handler) {
+    return [&, handler](const httplib::Request& req, httplib::Response& res) {
+      std::lock_guard<std::mutex> lock(working);
+      try {
+        handler(req, res);
+      } catch(const Bad_request& e) {
+        send_error(res, e.status, e.message);
+      } catch(const diffuv::Input_error& e) {
+        send_error(res, 400, e.what());
+      } catch(const diffuv::Error& e) {
+        send_error(res, 422, e.what());
+      }
+    };
+  };
+
+  const char* page_dir = std::getenv("DIFFUV_PAINTER_DIR");  // development: the page's files from disk
+  auto page_file = [page_dir](const char* name, const char* built_in, const char* type) {
+    return [=](const httplib::Request&, httplib::Response& res) {
+      if(page_dir) {
+        std::ifstream file(std::filesystem::path(page_dir) / name, std::ios::binary);
+        std::stringstream text;
+        text << file.rdbuf();
+        res.set_content(text.str(), type);
+      } else {
+        res.set_content(built_in, type);
+      }
+      res.set_header("Cache-Control", "no-store");
+    };
+  };
+  server.Get("/", page_file("index.html", painter_index_html, "text/html; charset=utf-8"));
+  server.Get("/index.html", page_file("index.html", painter_index_html, "text/html; charset=utf-8"));
+  server.Get("/painter.js", page_file("painter.js", painter_js, "text/javascript; charset=utf-8"));
+  server.Get("/painter.css", page_file("painter.css", painter_css, "text/css; charset=utf-8"));
+  if(!server.set_mount_point("/three", options.three_dir))
+    std::cerr << "diffuv: warning: " << options.three_dir
+              << " is not there: the page needs three.js (Debian package libjs-three)\n";
+
+  server.Get("/api/mesh", api([&](const httplib::Request&, httplib::Response& res) {
+    res.set_content(painter.mesh_json().dump(), "application/json");
+  }));
+  server.Post("/api/mesh", api([&](const httplib::Request& req, httplib::Response& res) {
+    if(!req.has_param("name")) throw Bad_request{400, "POST /api/mesh needs ?name=FILE.off (or .obj, .ply, .stl)"};
+    const std::string name = checked_mesh_name(req.get_param_value("name"));
+    if(req.body.empty()) throw Bad_request{400, name + ": the request has no file in its body"};
+    std::filesystem::create_directories(uploads);
+    const std::filesystem::path file = uploads / name;
+    {
+      std::ofstream out(file, std::ios::binary);
+      out.write(req.body.data(), static_cast<std::streamsize>(req.body.size()));
+      if(!out) throw Bad_request{500, "cannot keep the mesh in " + uploads.string()};
+    }
+    Painter next(options.threads);  // the mesh in use stays if the new one cannot be read
+    try {
+      next.load(file.string(), name);
+    } catch(const diffuv::Error& e) {
+      std::filesystem::remove(file);
+      std::string what = e.what();
+      const std::string path = file.string();
+      for(std::size_t at = what.find(path); at != std::string::npos; at = what.find(path)) what.replace(at, path.size(), name);
+      throw Bad_request{400, what};
+    }
+    std::filesystem::remove(file);
+    painter = std::move(next);
+    res.set_content(painter.mesh_json().dump(), "application/json");
+  }));
+  server.Post("/api/layout", api([&](const httplib::Request& req, httplib::Response& res) {
+    res.set_content(painter.layout(painter.labels_of(req.body), false).dump(), "application/json");
+  }));
+  server.Post("/api/param", api([&](const httplib::Request& req, httplib::Response& res) {
+    res.set_content(painter.layout(painter.labels_of(req.body), true).dump(), "application/json");
+  }));
+  server.Post("/api/labels.txt", api([&](const httplib::Request& req, httplib::Response& res) {
+    const std::vector<int> labels = painter.file_labels(painter.labels_of(req.body));
+    std::string text = "# diffuv labels: one region per face of " + painter.mesh().path + ", in the file's order\n";
+    for(int l : labels) text += std::to_string(l) + '\n';
+    res.set_content(text, "text/plain; charset=utf-8");
+    res.set_header("Content-Disposition", "attachment; filename=\"labels.txt\"");
+  }));
+  server.Post("/api/painted.ply", api([&](const httplib::Request& req, httplib::Response& res) {
+    res.set_content(painter.painted_ply(painter.labels_of(req.body)), "application/octet-stream");
+    res.set_header("Content-Disposition", "attachment; filename=\"painted.ply\"");
+  }));
+
+  int port = options.port;
+  if(port == 0) {
+    port = server.bind_to_any_port(options.host);
+    if(port < 0) throw diffuv::Input_error(options.host, 0, "cannot listen on any port of this address");
+  } else if(!server.bind_to_port(options.host, port)) {
+    throw diffuv::Input_error(options.host + ":" + std::to_string(port), 0,
+                              "cannot listen there (in use? try --port 0 for any free port)");
+  }
+  std::cout << "diffuv: serving http://" << (options.host.find(':') != std::string::npos ? "[" + options.host + "]" : options.host)
+            << ':' << port << "/" << (options.mesh.empty() ? "" : " (" + options.mesh + ")")
+            << "; Ctrl-C stops it" << std::endl;
+  if(options.host != "127.0.0.1" && options.host != "localhost" && options.host != "::1")
+    std::cerr << "diffuv: warning: listening on " << options.host
+              << ": anyone who can reach it can load meshes into this server\n";
+
+  std::atomic<bool> stopping{false};
+  std::thread stopper([&] {
+    int signal = 0;
+    sigwait(&stop_signals, &signal);
+    stopping = true;
+    server.stop();
+  });
+  server.listen_after_bind();
+  if(!stopping) {  // listen ended by itself: wake the stopper so it can be joined
+    stopping = true;
+    pthread_kill(stopper.native_handle(), SIGTERM);
+  }
+  stopper.join();
+  std::error_code ignored;
+  std::filesystem::remove_all(uploads, ignored);
+  std::cout << "diffuv: stopped" << std::endl;
+}
+
+} // namespace
+
+void add_serve_command(CLI::App& app)
+{
+  auto options = std::make_shared<Serve_options>();
+  CLI::App* cmd = app.add_subcommand(
+      "serve", "Paint regions on a mesh in the browser and see the patches and the map (a local web server)");
+  cmd->add_option("mesh", options->mesh, "The mesh to open (OFF, OBJ, PLY, STL; painted colours or labels are read); "
+                                         "default: none, open one in the page")
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--labels", options->labels, "A label file for the mesh (one region per face), to go on painting")
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--port", options->port, "The port to listen on (0: any free port, printed)")
+      ->check(CLI::Range(0, 65535))
+      ->capture_default_str();
+  cmd->add_option("--host", options->host, "The address to listen on (default: this machine only)")->capture_default_str();
+  cmd->add_option("--three", options->three_dir, "Where three.js is (Debian's libjs-three)")->capture_default_str();
+  cmd->add_option("--threads", options->threads, "Threads that map the patches (0: all)");
+  cmd->add_option("--max-request-mb", options->max_request_mb, "The largest request accepted, in MB (a mesh sent by the page)")
+      ->check(CLI::Range(1, 4096))
+      ->capture_default_str();
+  cmd->callback([options] {
+    if(!options->labels.empty() && options->mesh.empty())
+      throw CLI::ValidationError("--labels", "needs a mesh to go with (diffuv serve MESH --labels FILE)");
+    run_server(*options);
+  });
+}
+
+} // namespace diffuv_cli

@@ -1,0 +1,324 @@
+// Tests of `diffuv serve` (src/cli/serve.cpp) through its HTTP API, as the
+// page uses it: the tool started on a free port, an httplib client, JSON
+// answers checked against the mesh file and against `diffuv param` run on the
+// same labels; bad requests get a 4xx status and a message, and the server
+// goes on; Ctrl-C (SIGINT) stops it cleanly.
+#include "test_cli_tool.h"
+
+#include <httplib.h>
+#include <nlohmann/json.hpp>
+
+#include <CGAL/boost/graph/helpers.h>
+
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <fcntl.h>
+#include <set>
+#include <thread>
+#include <unistd.h>
+
+namespace {
+
+using namespace diffuv_cli_test;
+using json = nlohmann::json;
+
+// `diffuv serve ARGS --port 0` in the background; its stdout read until the
+// line that names the address.
+class Server_process {
+public:
+  Server_process(const std::string& args, const fs::path& log)
+  {
+    int pipe_fds[2];
+    if(::pipe(pipe_fds) != 0) return;
+    pid_ = ::fork();
+    if(pid_ == 0) {
+      ::dup2(pipe_fds[1], 1);
+      const int err = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+      ::dup2(err, 2);
+      ::close(pipe_fds[0]);
+      const std::string cmd = std::string("exec ") + DIFFUV_TOOL_PATH + " serve " + args + " --port 0";
+      ::execl("/bin/sh", "sh", "-c", cmd.c_str(), static_cast<char*>(nullptr));
+      ::_exit(127);
+    }
+    ::close(pipe_fds[1]);
+    out_ = ::fdopen(pipe_fds[0], "r");
+    char line[512];
+    if(out_ && std::fgets(line, sizeof line, out_)) {
+      first_line_ = line;
+      const auto colon = first_line_.find("127.0.0.1:");
+      if(colon != std::string::npos) port_ = std::atoi(first_line_.c_str() + colon + 10);
+    }
+  }
+  ~Server_process()
+  {
+    if(pid_ > 0 && !waited_) {
+      ::kill(pid_, SIGKILL);
+      ::waitpid(pid_, nullptr, 0);
+    }
+    if(out_) std::fclose(out_);
+  }
+  int port() const { return port_; }
+  const std::string& first_line() const { return first_line_; }
+
+  // Sends `signal` and waits up to `seconds` for the exit: the exit code, or -1.
+  int stop(int signal, int seconds)
+  {
+    ::kill(pid_, signal);
+    for(int i = 0; i < seconds * 20; ++i) {
+      int status = 0;
+      if(::waitpid(pid_, &status, WNOHANG) == pid_) {
+        waited_ = true;
+        return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    }
+    return -1;
+  }
+  // The rest of stdout (after stop()).
+  std::string rest()
+  {
+    std::string text;
+    char line[512];
+    while(out_ && std::fgets(line, sizeof line, out_)) text += line;
+    return text;
+  }
+
+private:
+  pid_t pid_ = -1;
+  FILE* out_ = nullptr;
+  std::string first_line_;
+  int port_ = 0;
+  bool waited_ = false;
+};
+
+class Serve : public Tool {
+protected:
+  json post_json(httplib::Client& client, const std::string& path, const json& body, int expected_status = 200)
+  {
+    auto res = client.Post(path.c_str(), body.dump(), "application/json");
+    EXPECT_TRUE(res) << path;
+    if(!res) return json();
+    EXPECT_EQ(res->status, expected_status) << path << ": " << res->body.substr(0, 300);
+    return json::parse(res->body, nullptr, false);
+  }
+};
+
+// Labels by height: cow cut into `bands` bands of equal height (y).
+std::vector<int> height_bands(const diffuv_test::Mesh& m, int bands)
+{
+  double lo = 1e300, hi = -1e300;
+  for(auto v : vertices(m)) {
+    lo = std::min(lo, m.point(v).y());
+    hi = std::max(hi, m.point(v).y());
+  }
+  std::vector<int> labels;
+  for(auto f : faces(m)) {
+    double y = 0;
+    for(auto v : vertices_around_face(m.halfedge(f), m)) y += m.point(v).y() / 3;
+    labels.push_back(std::min(bands - 1, static_cast<int>(bands * (y - lo) / (hi - lo))));
+  }
+  return labels;
+}
+
+TEST_F(Serve, MeshLayoutAndMapAsThePageGetsThem)
+{
+  const std::string cow_path = data_path("meshes/cow.off");
+  Server_process server(cow_path, dir_ / "server.err");
+  ASSERT_GT(server.port(), 0) << server.first_line() << slurp(dir_ / "server.err");
+  EXPECT_NE(server.first_line().find("http://127.0.0.1:"), std::string::npos);
+  httplib::Client client("127.0.0.1", server.port());
+  client.set_read_timeout(120, 0);
+
+  const diffuv_test::Mesh& cow = diffuv_test::cgal_mesh("cow.off");
+  auto res = client.Get("/api/mesh");
+  ASSERT_TRUE(res);
+  ASSERT_EQ(res->status, 200);
+  const json mesh = json::parse(res->body);
+  EXPECT_EQ(mesh["name"], "cow.off");
+  ASSERT_EQ(mesh["vertices"].size(), 3 * num_vertices(cow));
+  ASSERT_EQ(mesh["faces"].size(), 3 * num_faces(cow));
+  EXPECT_TRUE(mesh["labels"].is_null());
+  for(std::size_t i = 0; i < 30; ++i) {  // the file's points, in the file's order
+    const auto& p = cow.point(diffuv_test::Mesh::Vertex_index(static_cast<unsigned>(i)));
+    EXPECT_DOUBLE_EQ(mesh["vertices"][3 * i + 1].get<double>(), p.y());
+  }
+
+  // Automatic layout: every face in a patch, each mapped patch's four sides
+  // run corner to corner around it.
+  const json layout = post_json(client, "/api/layout", {{"labels", json::array()}});
+  ASSERT_TRUE(layout.is_object());
+  const std::size_t np = layout["patches"].get<std::size_t>();
+  EXPECT_GT(np, 50u);
+  ASSERT_EQ(layout["face_patch"].size(), num_faces(cow));
+  std::vector<std::size_t> faces_of(np, 0);
+  for(const auto& p : layout["face_patch"]) {
+    ASSERT_GE(p.get<int>(), 0);
+    ASSERT_LT(p.get<std::size_t>(), np);
+    ++faces_of[p.get<std::size_t>()];
+  }
+  for(std::size_t p = 0; p < np; ++p) EXPECT_GT(faces_of[p], 0u) << "patch " << p;
+  std::size_t drawn = 0;
+  for(std::size_t p = 0; p < np; ++p) {
+    const json& sides = layout["sides"][p];
+    const json& corners = layout["corners"][p];
+    if(sides.is_null()) continue;
+    ++drawn;
+    ASSERT_EQ(corners.size(), 4u);
+    EXPECT_EQ(std::set<int>(corners.begin(), corners.end()).size(), 4u) << "patch " << p;
+    const char* order[4] = {"v1", "u2", "v2", "u1"};
+    for(int s = 0; s < 4; ++s) {
+      const json& side = sides[order[s]];
+      ASSERT_GE(side.size(), 2u) << "patch " << p << " side " << order[s];
+      EXPECT_EQ(side.front(), corners[s]) << "patch " << p << " side " << order[s];
+      EXPECT_EQ(side.back(), corners[(s + 1) % 4]) << "patch " << p << " side " << order[s];
+    }
+  }
+  EXPECT_EQ(drawn, np);
+  EXPECT_TRUE(layout["problems"].is_array());
+
+  // Painted labels: the map, then the saved label file, which `diffuv param
+  // --labels` reads into the very same patches.
+  const std::vector<int> bands = height_bands(cow, 4);
+  const json mapped = post_json(client, "/api/param", {{"labels", bands}});
+  ASSERT_TRUE(mapped.is_object());
+  ASSERT_EQ(mapped["corner_uv"].size(), 6 * num_faces(cow));
+  for(const auto& x : mapped["corner_uv"]) {
+    ASSERT_TRUE(x.is_number()) << "a face without (u,v)";
+    EXPECT_GE(x.get<double>(), -1e-9);
+    EXPECT_LE(x.get<double>(), 1 + 1e-9);
+  }
+  EXPECT_TRUE(mapped["summary"]["injective"].get<bool>());
+  EXPECT_EQ(mapped["summary"]["charts"], mapped["patches"]);
+  EXPECT_LT(mapped["summary"]["l2"].get<double>(), 5.0);
+  ASSERT_EQ(mapped["face_area_distortion"].size(), num_faces(cow));
+  // A patch of a band lies in the band (but for the faces jutting out of a
+  // band's jagged border, which the layout gives to the next band).
+  std::size_t kept = 0;
+  for(std::size_t f = 0; f < num_faces(cow); ++f)
+    kept += mapped["patch_label"][mapped["face_patch"][f].get<std::size_t>()].get<int>() == bands[f];
+  EXPECT_GE(kept, num_faces(cow) * 97 / 100);
+
+  // The mesh's own labels (none) are still what it answers.
+  auto again = client.Get("/api/mesh");
+  ASSERT_TRUE(again);
+  EXPECT_TRUE(json::parse(again->body)["labels"].is_null());
+
+  auto saved = client.Post("/api/labels.txt", json{{"labels", bands}}.dump(), "application/json");
+  ASSERT_TRUE(saved);
+  ASSERT_EQ(saved->status, 200);
+  std::ofstream(dir_ / "bands.txt") << saved->body;
+  const Tool_run param = run("param " + cow_path + " --labels " + (dir_ / "bands.txt").string() + " -o " + out_dir().string() + " -q");
+  ASSERT_EQ(param.code, 0) << param.err;
+  std::ifstream patches_file(out_dir() / "cow.patches.txt");
+  std::string line;
+  std::size_t f = 0;
+  while(std::getline(patches_file, line)) {
+    if(line.empty() || line[0] == '#') continue;
+    ASSERT_LT(f, num_faces(cow));
+    EXPECT_EQ(std::stoi(line), mapped["face_patch"][f].get<int>()) << "face " << f;
+    ++f;
+  }
+  EXPECT_EQ(f, num_faces(cow));
+
+  // Unpainted faces (-1) are one more region; the painted PLY carries the labels.
+  std::vector<int> partly(num_faces(cow), -1);
+  for(std::size_t k = 0; k < partly.size(); ++k) if(bands[k] == 0) partly[k] = 3;
+  auto ply = client.Post("/api/painted.ply", json{{"labels", partly}}.dump(), "application/json");
+  ASSERT_TRUE(ply);
+  ASSERT_EQ(ply->status, 200);
+  EXPECT_EQ(ply->body.rfind("ply\n", 0), 0u);
+  EXPECT_NE(ply->body.find("element face " + std::to_string(num_faces(cow))), std::string::npos);
+
+  EXPECT_EQ(server.stop(SIGINT, 10), 0) << "Ctrl-C must stop the server cleanly";
+  EXPECT_NE(server.rest().find("stopped"), std::string::npos);
+}
+
+TEST_F(Serve, BadRequestsGetAClearRefusalAndTheServerGoesOn)
+{
+  Server_process server(data_path("meshes/cow.off") + " --max-request-mb 1", dir_ / "server.err");
+  ASSERT_GT(server.port(), 0) << server.first_line() << slurp(dir_ / "server.err");
+  httplib::Client client("127.0.0.1", server.port());
+  client.set_read_timeout(60, 0);
+  const std::size_t nf = num_faces(diffuv_test::cgal_mesh("cow.off"));
+
+  auto expect_refused = [&](httplib::Result res, int status, const std::string& says, const std::string& what) {
+    ASSERT_TRUE(res) << what << ": no answer (crashed?)";
+    EXPECT_EQ(res->status, status) << what << ": " << res->body.substr(0, 200);
+    const json body = json::parse(res->body, nullptr, false);
+    ASSERT_TRUE(body.is_object() && body.contains("error")) << what << ": " << res->body.substr(0, 200);
+    EXPECT_NE(body["error"].get<std::string>().find(says), std::string::npos) << what << ": " << body["error"];
+  };
+  expect_refused(client.Post("/api/layout", "{\"labels\": [1, 2", "application/json"), 400, "not JSON", "malformed JSON");
+  expect_refused(client.Post("/api/layout", "[]", "application/json"), 400, "no \"labels\"", "no labels");
+  expect_refused(client.Post("/api/param", json{{"labels", std::vector<int>(nf - 1, 0)}}.dump(), "application/json"), 400,
+                 std::to_string(nf - 1) + " labels for a mesh of " + std::to_string(nf) + " faces", "labels too few");
+  json wrong = json{{"labels", std::vector<int>(nf, 0)}};
+  wrong["labels"][7] = "leg";
+  expect_refused(client.Post("/api/layout", wrong.dump(), "application/json"), 400, "label 7 is \"leg\"", "a string label");
+  wrong["labels"][7] = -5;
+  expect_refused(client.Post("/api/layout", wrong.dump(), "application/json"), 400, "label 7 is -5", "a label below -1");
+  expect_refused(client.Post("/api/labels.txt", json{{"labels", std::vector<int>(nf, -1)}}.dump(), "application/json"), 400,
+                 "nothing is painted", "saving nothing");
+  expect_refused(client.Post("/api/mesh", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", "text/plain"), 400, "?name=",
+                 "a mesh without a name");
+  expect_refused(client.Post("/api/mesh?name=..%2Fcow.off", "OFF\n", "text/plain"), 400, "not a file name", "a path as name");
+  expect_refused(client.Post("/api/mesh?name=cow.exe", "OFF\n", "text/plain"), 400, "not a file name", "an unknown format");
+  expect_refused(client.Post("/api/mesh?name=broken.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n", "text/plain"), 400, "broken.off",
+                 "a truncated mesh");
+  expect_refused(client.Get("/api/nothing"), 404, "no such page", "an unknown path");
+  expect_refused(client.Post("/api/layout", std::string(2u << 20, ' '), "application/json"), 413, "larger than",
+                 "a request over the limit");
+  // Files outside the page and three.js are not served.
+  auto escape = client.Get("/three/../../../../etc/passwd");
+  ASSERT_TRUE(escape);
+  EXPECT_GE(escape->status, 400);
+  EXPECT_EQ(escape->body.find("root:"), std::string::npos);
+
+  // Still the cow, still serving.
+  auto res = client.Get("/api/mesh");
+  ASSERT_TRUE(res);
+  ASSERT_EQ(res->status, 200);
+  EXPECT_EQ(json::parse(res->body)["faces"].size(), 3 * nf);
+  auto page = client.Get("/");
+  ASSERT_TRUE(page);
+  EXPECT_EQ(page->status, 200);
+  EXPECT_NE(page->body.find("painter.js"), std::string::npos);
+  EXPECT_EQ(server.stop(SIGTERM, 10), 0);
+}
+
+TEST_F(Serve, WithoutAMeshTheFirstIsSentByThePage)
+{
+  Server_process server("", dir_ / "server.err");
+  ASSERT_GT(server.port(), 0) << server.first_line() << slurp(dir_ / "server.err");
+  httplib::Client client("127.0.0.1", server.port());
+  auto none = client.Get("/api/mesh");
+  ASSERT_TRUE(none);
+  EXPECT_EQ(none->status, 404);
+  EXPECT_NE(none->body.find("no mesh is loaded"), std::string::npos);
+  auto sent = client.Post("/api/mesh?name=grid.off", grid_off, "application/octet-stream");
+  ASSERT_TRUE(sent);
+  ASSERT_EQ(sent->status, 200) << sent->body;
+  const json mesh = json::parse(sent->body);
+  EXPECT_EQ(mesh["name"], "grid.off");
+  EXPECT_EQ(mesh["faces"].size(), 24u);
+  EXPECT_DOUBLE_EQ(mesh["diagonal"].get<double>(), std::sqrt(8.0));
+  const json mapped = post_json(client, "/api/param", {{"labels", json::array()}});
+  EXPECT_EQ(mapped["patches"], 1);
+  EXPECT_TRUE(mapped["summary"]["injective"].get<bool>());
+  EXPECT_EQ(server.stop(SIGINT, 10), 0);
+}
+
+TEST_F(Serve, RefusesAPortInUseAndAMissingMesh)
+{
+  Server_process first("", dir_ / "first.err");
+  ASSERT_GT(first.port(), 0);
+  const Tool_run taken = run("serve --port " + std::to_string(first.port()));
+  EXPECT_EQ(taken.code, 1);
+  EXPECT_NE(taken.err.find("cannot listen there"), std::string::npos) << taken.err;
+  const Tool_run missing = run("serve " + (dir_ / "nothing.off").string());
+  EXPECT_EQ(missing.code, 2);
+  EXPECT_NE(missing.err.find("nothing.off"), std::string::npos) << missing.err;
+}
+
+} // namespace
