@@ -361,7 +361,7 @@ Status quad_layout(const TriangleMesh& tm, VertexPointMap vpm, const std::vector
     r.region_ears_moved = ears_moved;
     if(round >= options.refine_rounds) break;
     // Only the cell holding most of a patch may be refined, and only if it is
-    // large enough: the judge need not map patches of smaller cells.
+    // large enough (or the patch is): the judge need not map patches of smaller cells.
     std::vector<std::size_t> cell_of_patch(layout.number_of_patches(), cells.number_of_patches());
     std::vector<char> refinable(layout.number_of_patches(), 0);
     for(std::size_t p = 0; p < layout.number_of_patches(); ++p) {
@@ -371,7 +371,9 @@ Status quad_layout(const TriangleMesh& tm, VertexPointMap vpm, const std::vector
       const std::size_t c =
           std::max_element(count.begin(), count.end(), [](const auto& a, const auto& b) { return a.second < b.second; })->first;
       cell_of_patch[p] = c;
-      refinable[p] = c < cells.number_of_patches() && cells.patch_faces[c].size() >= options.min_split_faces;
+      refinable[p] = c < cells.number_of_patches() &&
+                     (cells.patch_faces[c].size() >= options.min_split_faces ||
+                      layout.patch_faces[p].size() >= options.min_split_patch_faces);
     }
     const std::vector<std::size_t> bad =
         internal::judge_candidates(judge, static_cast<const Segmentation<TriangleMesh>&>(layout), refinable);

@@ -21,7 +21,13 @@ struct Quad_layout_options {
   bool collapse_near_junction = true;  ///< collapse a short arc whose dual edge crosses it next to a junction
   std::size_t max_cells = 100000;      ///< stop adding seeds for non-disc cells beyond this
   std::size_t min_cell_faces = 0;      ///< a smaller cell joins a neighbour of its region (if both stay discs)
-  std::size_t min_split_faces = 400;   ///< refinement splits no cell smaller than this
+  std::size_t min_split_faces = 400;   ///< refinement splits no cell smaller than this, unless:
+  /// a patch of at least this many faces whose map is bad may have its cell
+  /// split whatever the cell's size: such a patch is most of its cell, and
+  /// large enough that the halves can still be fanned (a cow's leg left as
+  /// one 255-face quad by a layout of labels folded almost whole: L2 130;
+  /// doc/layout.md, "Large patches in small cells")
+  std::size_t min_split_patch_faces = 240;
   std::size_t refine_rounds = 4;       ///< rounds of refinement asked by the judge (see `quad_layout()`)
   /// Labelled regions stay whole when they are all discs and at least this
   /// share of their faces lie in regions with exactly four runs of neighbours
