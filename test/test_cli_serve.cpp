@@ -269,6 +269,26 @@ TEST_F(Serve, BadRequestsGetAClearRefusalAndTheServerGoesOn)
   expect_refused(client.Get("/api/nothing"), 404, "no such page", "an unknown path");
   expect_refused(client.Post("/api/layout", std::string(2u << 20, ' '), "application/json"), 413, "larger than",
                  "a request over the limit");
+  expect_refused(client.Post("/api/layout", "{\"labels\": \"\xff\xfe\"}", "application/json"), 400, "not JSON",
+                 "invalid UTF-8");
+  expect_refused(client.Post(("/api/mesh?name=" + std::string(250, 'a') + ".off").c_str(), grid_off, "text/plain"), 400,
+                 "longer than 200", "a very long name");
+  expect_refused(client.Post("/api/layout", "labels=1", "application/x-www-form-urlencoded"), 415, "application/json",
+                 "a form-encoded body (curl -d)");
+  {
+    httplib::Headers gzip = {{"Content-Encoding", "gzip"}};
+    expect_refused(client.Post("/api/layout", gzip, std::string(20, 'x'), "application/json"), 415, "uncompressed",
+                   "a compressed body");
+    httplib::Headers foreign = {{"Origin", "http://evil.example"}};
+    expect_refused(client.Post("/api/mesh?name=grid.off", foreign, grid_off, "text/plain"), 403, "another site",
+                   "a post from another site's page");
+    httplib::Headers own = {{"Origin", "http://127.0.0.1:" + std::to_string(server.port())}};
+    auto same_site = client.Get("/api/mesh", own);
+    ASSERT_TRUE(same_site);
+    EXPECT_EQ(same_site->status, 200);
+    httplib::Headers rebound = {{"Host", "evil.example"}};
+    expect_refused(client.Get("/api/mesh", rebound), 403, "127.0.0.1:", "a request for another host name");
+  }
   // Files outside the page and three.js are not served.
   auto escape = client.Get("/three/../../../../etc/passwd");
   ASSERT_TRUE(escape);
@@ -316,6 +336,9 @@ TEST_F(Serve, RefusesAPortInUseAndAMissingMesh)
   const Tool_run taken = run("serve --port " + std::to_string(first.port()));
   EXPECT_EQ(taken.code, 1);
   EXPECT_NE(taken.err.find("cannot listen there"), std::string::npos) << taken.err;
+  const Tool_run threads = run("serve --threads 99999");
+  EXPECT_EQ(threads.code, 2);
+  EXPECT_NE(threads.err.find("--threads"), std::string::npos) << threads.err;
   const Tool_run missing = run("serve " + (dir_ / "nothing.off").string());
   EXPECT_EQ(missing.code, 2);
   EXPECT_NE(missing.err.find("nothing.off"), std::string::npos) << missing.err;

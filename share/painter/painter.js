@@ -1479,7 +1479,12 @@ async function main() {
   try {
     await loadMeshFromServer();
   } catch (e) {
-    showError(e);
+    // Started without a mesh: not an error, the first step.
+    if (String(e && e.message).includes("no mesh is loaded")) {
+      showMessage("Open a mesh (Open mesh, or drop a .off .obj .ply .stl file on the view).", "info");
+    } else {
+      showError(e);
+    }
   }
   if (TEST_MODE) {
     await runSelfTest();

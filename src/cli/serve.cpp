@@ -60,6 +60,17 @@ struct Bad_request {
   std::string message;
 };
 
+// JSON text; bytes that are not UTF-8 (a file name, a parser's message
+// quoting the request) are replaced rather than thrown on.
+std::string as_text(const json& j) { return j.dump(-1, ' ', false, json::error_handler_t::replace); }
+
+// A library message about patch p may start with "patch p: "; the API gives the patch apart.
+std::string without_patch_prefix(const std::string& message, std::size_t p)
+{
+  const std::string prefix = "patch " + std::to_string(p) + ": ";
+  return message.compare(0, prefix.size(), prefix) == 0 ? message.substr(prefix.size()) : message;
+}
+
 // The state of one painter session: the mesh and what it came with.
 class Painter {
 public:
@@ -96,6 +107,9 @@ public:
                    {"faces", std::move(faces)},
                    {"labels", mesh().face_labels.empty() ? json(nullptr) : json(mesh().face_labels)},
                    {"label_source", mesh().label_source},
+                   {"read_repairs", repair_line(mesh())},
+                   // the polygon of the file each triangle comes from (label files count polygons)
+                   {"file_face", mesh().report.file_face.empty() ? json(nullptr) : json(mesh().report.file_face)},
                    {"diagonal", std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
                                           CGAL::square(box.zmax() - box.zmin()))}};
     return result;
@@ -109,7 +123,7 @@ public:
     json request;
     try {
       request = json::parse(body);
-    } catch(const json::parse_error& e) {
+    } catch(const json::exception& e) {
       throw Bad_request{400, std::string("the request is not JSON: ") + e.what()};
     }
     if(!request.is_object() || !request.contains("labels") || !request["labels"].is_array())
@@ -125,7 +139,7 @@ public:
     for(std::size_t f = 0; f < nf; ++f) {
       const json& l = labels[f];
       if(!l.is_number_integer() || l.get<long long>() < -1 || l.get<long long>() > 1000000)
-        throw Bad_request{400, "label " + std::to_string(f) + " is " + l.dump() + ", not an integer from -1 to 1000000"};
+        throw Bad_request{400, "label " + std::to_string(f) + " is " + as_text(l) + ", not an integer from -1 to 1000000"};
       result[f] = l.get<int>();
       largest = std::max(largest, result[f]);
       unpainted = unpainted || result[f] < 0;
@@ -173,7 +187,8 @@ public:
         sides.push_back(nullptr);
         problems.push_back({{"kind", "not_mapped"},
                             {"patch", p},
-                            {"message", p < result.patches.size() ? result.patches[p].status.what() : "no result"}});
+                            {"message", p < result.patches.size() ? without_patch_prefix(result.patches[p].status.what(), p)
+                                                                  : std::string("no result")}});
         continue;
       }
       const auto& s = result.patches[p].sides;
@@ -197,12 +212,14 @@ public:
     for(std::size_t p : r.not_discs)
       problems.push_back({{"kind", "not_a_disc"}, {"patch", p}, {"message", "not a disc"}});
     auto note = [&](std::size_t n, const std::string& kind, const std::string& what) {
-      if(n > 0) problems.push_back({{"kind", kind}, {"patch", -1}, {"message", count_text(n, what)}});
+      if(n > 0) problems.push_back({{"kind", kind}, {"patch", -1}, {"message", what}});
     };
-    note(r.merged, "merged", "patch with fewer than four boundary vertices merged into a neighbour");
-    note(r.cut, "cut", "region that is not a disc cut into discs");
-    note(r.caps_split, "cap_split", "cap split");
-    note(r.flat_triangles_handed, "flat_triangles", "face flat on one side of its patch handed to a neighbour");
+    note(r.merged, "merged", count_text(r.merged, "patch", "patches") + " with fewer than four boundary vertices merged into a neighbour");
+    note(r.cut, "cut", count_text(r.cut, "region") + " that " + (r.cut == 1 ? "was" : "were") + " not a disc cut into discs");
+    note(r.caps_split, "cap_split", count_text(r.caps_split, "cap") + " split");
+    note(r.flat_triangles_handed, "flat_triangles",
+         count_text(r.flat_triangles_handed, "face") + " flat on one side of its patch handed to a neighbour");
+    if(!repair_line(in).empty()) problems.push_back({{"kind", "read_repairs"}, {"patch", -1}, {"message", repair_line(in)}});
     if(r.voronoi_instead)
       problems.push_back({{"kind", "voronoi_instead"},
                           {"patch", -1},
@@ -250,6 +267,13 @@ public:
       ++charts;
       moved += result.patches[p].repair.moved_vertices + result.patches[p].repair.moved_border_vertices;
       total = diffuv::combined(total, measures[p].summary);
+      if(!measures[p].summary.injective())
+        out["problems"].push_back({{"kind", "not_one_to_one"},
+                                   {"patch", p},
+                                   {"message", "not one-to-one: " + std::to_string(measures[p].summary.flipped) + " flipped, " +
+                                                   std::to_string(measures[p].summary.degenerate) + " degenerate, " +
+                                                   std::to_string(measures[p].summary.overlapping_pairs) +
+                                                   " overlapping pairs of triangles"}});
       const auto& faces = atlas.chart(result.patches[p].chart).faces;
       for(std::size_t k = 0; k < faces.size() && k < measures[p].per_face.size(); ++k) {
         area[faces[k].idx()] = measures[p].per_face[k].area;
@@ -314,7 +338,7 @@ private:
 void send_error(httplib::Response& res, int status, const std::string& message)
 {
   res.status = status;
-  res.set_content(json{{"error", message}}.dump(), "application/json");
+  res.set_content(as_text(json{{"error", message}}), "application/json");
 }
 
 // The mesh's file name as sent by the page: a plain name with a known extension.
@@ -323,8 +347,11 @@ std::string checked_mesh_name(const std::string& name)
   const std::string plain = std::filesystem::path(name).filename().string();
   std::string ext = std::filesystem::path(plain).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  if(plain.empty() || plain != name || (ext != ".off" && ext != ".obj" && ext != ".ply" && ext != ".stl"))
-    throw Bad_request{400, "the mesh name '" + name + "' is not a file name ending in .off, .obj, .ply or .stl"};
+  const bool control = std::any_of(name.begin(), name.end(), [](unsigned char c) { return c < 32 || c == 127; });
+  if(control || plain.empty() || plain != name || (ext != ".off" && ext != ".obj" && ext != ".ply" && ext != ".stl"))
+    throw Bad_request{400, "the mesh name '" + (control ? std::string("(with control characters)") : name) +
+                               "' is not a file name ending in .off, .obj, .ply or .stl"};
+  if(name.size() > 200) throw Bad_request{400, "the mesh name is longer than 200 characters"};
   return plain;
 }
 
@@ -344,8 +371,12 @@ void run_server(const Serve_options& options)
     painter.load(options.mesh, std::filesystem::path(options.mesh).filename().string(), options.labels);
   std::mutex working;  // one request at a time touches the mesh (CGAL adds property maps even to a const mesh)
 
-  // A temporary folder of this server's own, for meshes sent by the page.
-  std::filesystem::path uploads = std::filesystem::temp_directory_path() / ("diffuv-serve-" + std::to_string(::getpid()));
+  // A temporary folder of this server's own (mkdtemp: a fresh name, mode
+  // 0700, never an existing folder or link), for meshes sent by the page.
+  std::string uploads_template = (std::filesystem::temp_directory_path() / "diffuv-serve-XXXXXX").string();
+  if(!::mkdtemp(uploads_template.data()))
+    throw diffuv::Output_error(uploads_template, "cannot make a temporary folder for the meshes sent by the page");
+  const std::filesystem::path uploads = uploads_template;
 
   httplib::Server server;
   // httplib's default also sets SO_REUSEPORT, with which a second server on
@@ -356,7 +387,8 @@ void run_server(const Serve_options& options)
   });
   const std::size_t max_request_mb = options.max_request_mb;
   server.set_payload_max_length(max_request_mb << 20);
-  server.set_read_timeout(60, 0);
+  server.set_read_timeout(10, 0);      // a stalled client holds a worker (and the shutdown) this long at most
+  server.set_keep_alive_timeout(1);    // an open page's idle connection does not delay Ctrl-C
   server.set_exception_handler([](const httplib::Request&, httplib::Response& res, std::exception_ptr e) {
     try {
       if(e) std::rethrow_exception(e);
@@ -413,13 +445,12 @@ void run_server(const Serve_options& options)
               << " is not there: the page needs three.js (Debian package libjs-three)\n";
 
   server.Get("/api/mesh", api([&](const httplib::Request&, httplib::Response& res) {
-    res.set_content(painter.mesh_json().dump(), "application/json");
+    res.set_content(as_text(painter.mesh_json()), "application/json");
   }));
   server.Post("/api/mesh", api([&](const httplib::Request& req, httplib::Response& res) {
     if(!req.has_param("name")) throw Bad_request{400, "POST /api/mesh needs ?name=FILE.off (or .obj, .ply, .stl)"};
     const std::string name = checked_mesh_name(req.get_param_value("name"));
     if(req.body.empty()) throw Bad_request{400, name + ": the request has no file in its body"};
-    std::filesystem::create_directories(uploads);
     const std::filesystem::path file = uploads / name;
     {
       std::ofstream out(file, std::ios::binary);
@@ -438,13 +469,13 @@ void run_server(const Serve_options& options)
     }
     std::filesystem::remove(file);
     painter = std::move(next);
-    res.set_content(painter.mesh_json().dump(), "application/json");
+    res.set_content(as_text(painter.mesh_json()), "application/json");
   }));
   server.Post("/api/layout", api([&](const httplib::Request& req, httplib::Response& res) {
-    res.set_content(painter.layout(painter.labels_of(req.body), false).dump(), "application/json");
+    res.set_content(as_text(painter.layout(painter.labels_of(req.body), false)), "application/json");
   }));
   server.Post("/api/param", api([&](const httplib::Request& req, httplib::Response& res) {
-    res.set_content(painter.layout(painter.labels_of(req.body), true).dump(), "application/json");
+    res.set_content(as_text(painter.layout(painter.labels_of(req.body), true)), "application/json");
   }));
   server.Post("/api/labels.txt", api([&](const httplib::Request& req, httplib::Response& res) {
     const std::vector<int> labels = painter.file_labels(painter.labels_of(req.body));
@@ -466,12 +497,48 @@ void run_server(const Serve_options& options)
     throw diffuv::Input_error(options.host + ":" + std::to_string(port), 0,
                               "cannot listen there (in use? try --port 0 for any free port)");
   }
-  std::cout << "diffuv: serving http://" << (options.host.find(':') != std::string::npos ? "[" + options.host + "]" : options.host)
-            << ':' << port << "/" << (options.mesh.empty() ? "" : " (" + options.mesh + ")")
-            << "; Ctrl-C stops it" << std::endl;
-  if(options.host != "127.0.0.1" && options.host != "localhost" && options.host != "::1")
+  const bool loopback = options.host == "127.0.0.1" || options.host == "localhost" || options.host == "::1";
+  const bool any_address = options.host == "0.0.0.0" || options.host == "::";
+  const std::string shown_host =
+      any_address ? "127.0.0.1" : options.host.find(':') != std::string::npos ? "[" + options.host + "]" : options.host;
+  if(!loopback)
     std::cerr << "diffuv: warning: listening on " << options.host
-              << ": anyone who can reach it can load meshes into this server\n";
+              << ": anyone who can reach it can load meshes into this server" << std::endl;
+  std::cout << "diffuv: serving http://" << shown_host << ':' << port << "/"
+            << (any_address ? " (on every address of this machine)" : "")
+            << (options.mesh.empty() ? "" : " (" + options.mesh + ")") << "; Ctrl-C stops it" << std::endl;
+
+  // Before a body is read: refuse what would slip past the size limit
+  // (chunked or compressed bodies), form-encoded bodies (httplib caps them at
+  // 8 KB), and, on this machine's loopback, requests for another host name or
+  // from another site's page (DNS rebinding, cross-site posts).
+  const std::string port_text = std::to_string(port);
+  const std::vector<std::string> own_hosts = {"127.0.0.1:" + port_text, "localhost:" + port_text, "[::1]:" + port_text};
+  server.set_pre_routing_handler([loopback, own_hosts, port_text](const httplib::Request& req, httplib::Response& res) {
+    auto refuse = [&](int status, const std::string& message) {
+      send_error(res, status, message);
+      return httplib::Server::HandlerResponse::Handled;
+    };
+    const std::string host = req.get_header_value("Host");
+    if(loopback && std::find(own_hosts.begin(), own_hosts.end(), host) == own_hosts.end())
+      return refuse(403, "this server answers requests for 127.0.0.1:" + port_text + " only, not for '" + host + "'");
+    if(req.has_header("Origin")) {
+      const std::string origin = req.get_header_value("Origin");
+      const bool own = loopback ? std::any_of(own_hosts.begin(), own_hosts.end(),
+                                              [&](const std::string& h) { return origin == "http://" + h; })
+                                : origin == "http://" + host;
+      if(!own) return refuse(403, "requests from the page of another site (" + origin + ") are refused");
+    }
+    if(req.get_header_value("Transfer-Encoding").find("chunked") != std::string::npos)
+      return refuse(411, "send the body with a Content-Length, not in chunks");
+    const std::string encoding = req.get_header_value("Content-Encoding");
+    if(!encoding.empty() && encoding != "identity")
+      return refuse(415, "send the body uncompressed (Content-Encoding: " + encoding + ")");
+    if(req.get_header_value("Content-Type").find("application/x-www-form-urlencoded") != std::string::npos)
+      return refuse(415, "send the body as application/json, or as application/octet-stream for a mesh "
+                         "(curl: -H 'Content-Type: application/json')");
+    return httplib::Server::HandlerResponse::Unhandled;
+  });
 
   std::atomic<bool> stopping{false};
   std::thread stopper([&] {
@@ -497,18 +564,22 @@ void add_serve_command(CLI::App& app)
 {
   auto options = std::make_shared<Serve_options>();
   CLI::App* cmd = app.add_subcommand(
-      "serve", "Paint regions on a mesh in the browser and see the patches and the map (a local web server)");
+      "serve", "Paint regions on a mesh in the browser and see the patches and the map (a local web server; "
+             "open the address it prints; ?view=patches, isolines or distortion opens that view; guide and HTTP API: "
+             "doc/painter.md)");
   cmd->add_option("mesh", options->mesh, "The mesh to open (OFF, OBJ, PLY, STL; painted colours or labels are read); "
                                          "default: none, open one in the page")
       ->check(CLI::ExistingFile);
-  cmd->add_option("--labels", options->labels, "A label file for the mesh (one region per face), to go on painting")
+  cmd->add_option("--labels", options->labels, "A label file for the mesh (one region per polygon of the file, as param --labels reads), to go on painting")
       ->check(CLI::ExistingFile);
   cmd->add_option("--port", options->port, "The port to listen on (0: any free port, printed)")
       ->check(CLI::Range(0, 65535))
       ->capture_default_str();
   cmd->add_option("--host", options->host, "The address to listen on (default: this machine only)")->capture_default_str();
   cmd->add_option("--three", options->three_dir, "Where three.js is (Debian's libjs-three)")->capture_default_str();
-  cmd->add_option("--threads", options->threads, "Threads that map the patches (0: all)");
+  cmd->add_option("--threads", options->threads, "Threads that map the patches (0: all)")
+      ->check(CLI::Range(0, 1024))
+      ->capture_default_str();
   cmd->add_option("--max-request-mb", options->max_request_mb, "The largest request accepted, in MB (a mesh sent by the page)")
       ->check(CLI::Range(1, 4096))
       ->capture_default_str();
