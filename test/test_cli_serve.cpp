@@ -52,7 +52,8 @@ public:
   }
   ~Server_process()
   {
-    if(pid_ > 0 && !waited_) {
+    // Stopped as a user would (so it removes its temporary folder), killed if it does not stop.
+    if(pid_ > 0 && !waited_ && stop(SIGTERM, 5) == -1 && !waited_) {
       ::kill(pid_, SIGKILL);
       ::waitpid(pid_, nullptr, 0);
     }

@@ -377,6 +377,14 @@ void run_server(const Serve_options& options)
   if(!::mkdtemp(uploads_template.data()))
     throw diffuv::Output_error(uploads_template, "cannot make a temporary folder for the meshes sent by the page");
   const std::filesystem::path uploads = uploads_template;
+  struct Removed_at_exit {  // also when the server cannot start (a port in use)
+    std::filesystem::path folder;
+    ~Removed_at_exit()
+    {
+      std::error_code ignored;
+      std::filesystem::remove_all(folder, ignored);
+    }
+  } remove_uploads{uploads};
 
   httplib::Server server;
   // httplib's default also sets SO_REUSEPORT, with which a second server on
@@ -553,8 +561,6 @@ void run_server(const Serve_options& options)
     pthread_kill(stopper.native_handle(), SIGTERM);
   }
   stopper.join();
-  std::error_code ignored;
-  std::filesystem::remove_all(uploads, ignored);
   std::cout << "diffuv: stopped" << std::endl;
 }
 
