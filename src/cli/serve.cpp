@@ -579,15 +579,15 @@ void add_serve_command(CLI::App& app)
   cmd->add_option("--labels", options->labels, "A label file for the mesh (one region per polygon of the file, as param --labels reads), to go on painting")
       ->check(CLI::ExistingFile);
   cmd->add_option("--port", options->port, "The port to listen on (0: any free port, printed)")
-      ->check(CLI::Range(0, 65535))
+      ->check(number_in(0, 65535))
       ->capture_default_str();
   cmd->add_option("--host", options->host, "The address to listen on (default: this machine only)")->capture_default_str();
   cmd->add_option("--three", options->three_dir, "Where three.js is (Debian's libjs-three)")->capture_default_str();
   cmd->add_option("--threads", options->threads, "Threads that map the patches (0: all)")
-      ->check(CLI::Range(0, 1024))
+      ->check(number_in(0, 1024))
       ->capture_default_str();
   cmd->add_option("--max-request-mb", options->max_request_mb, "The largest request accepted, in MB (a mesh sent by the page)")
-      ->check(CLI::Range(1, 4096))
+      ->check(number_in(1, 4096))
       ->capture_default_str();
   cmd->callback([options] {
     if(!options->labels.empty() && options->mesh.empty())
