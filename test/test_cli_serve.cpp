@@ -10,6 +10,7 @@
 
 #include <CGAL/boost/graph/helpers.h>
 
+#include <array>
 #include <chrono>
 #include <csignal>
 #include <cstdio>
@@ -328,6 +329,181 @@ TEST_F(Serve, WithoutAMeshTheFirstIsSentByThePage)
   EXPECT_EQ(mapped["patches"], 1);
   EXPECT_TRUE(mapped["summary"]["injective"].get<bool>());
   EXPECT_EQ(server.stop(SIGINT, 10), 0);
+}
+
+// Two meshes: cow (A) and a copy turned, scaled and moved, with each face
+// listed from another corner (B). The same painted regions on both: every
+// vertex of A lands on its copy, asked points and their barycentric
+// coordinates come back in each mesh's own face order, and the answer is
+// what `diffuv correspond` writes for the same labels.
+TEST_F(Serve, SecondMeshAndCorrespondenceAsDiffuvCorrespondGivesThem)
+{
+  const diffuv_test::Mesh& cow = diffuv_test::cgal_mesh("cow.off");
+  auto moved = [](const diffuv_test::Mesh::Point& p) {
+    return std::array<double, 3>{{-2. * p.y() + 5., 2. * p.x(), 2. * p.z() - 3.}};
+  };
+  std::ostringstream b;
+  b.precision(17);
+  b << "OFF\n" << num_vertices(cow) << ' ' << num_faces(cow) << " 0\n";
+  for(auto v : vertices(cow)) {
+    const auto q = moved(cow.point(v));
+    b << q[0] << ' ' << q[1] << ' ' << q[2] << '\n';
+  }
+  for(auto f : faces(cow)) {
+    std::vector<std::size_t> t;
+    for(auto v : CGAL::vertices_around_face(cow.halfedge(f), cow)) t.push_back(v.idx());
+    b << "3 " << t[1] << ' ' << t[2] << ' ' << t[0] << '\n';
+  }
+  const std::string b_path = write("b.off", b.str());
+  const std::string cow_path = data_path("meshes/cow.off");
+  const std::vector<int> bands = height_bands(cow, 4);
+
+  Server_process server(cow_path + " " + b_path, dir_ / "server.err");
+  ASSERT_GT(server.port(), 0) << server.first_line() << slurp(dir_ / "server.err");
+  EXPECT_NE(server.first_line().find("b.off"), std::string::npos) << server.first_line();
+  httplib::Client client("127.0.0.1", server.port());
+  client.set_read_timeout(120, 0);
+
+  auto got_b = client.Get("/api/mesh?mesh=b");
+  ASSERT_TRUE(got_b);
+  ASSERT_EQ(got_b->status, 200);
+  const json mesh_b = json::parse(got_b->body);
+  EXPECT_EQ(mesh_b["name"], "b.off");
+  ASSERT_EQ(mesh_b["faces"].size(), 3 * num_faces(cow));
+  const json mesh_a = json::parse(client.Get("/api/mesh")->body);
+  // B's layout is asked for as A's is.
+  const json layout_b = post_json(client, "/api/layout?mesh=b", {{"labels", bands}});
+  ASSERT_TRUE(layout_b.is_object());
+  EXPECT_EQ(layout_b["face_patch"].size(), num_faces(cow));
+
+  // A point inside face 100 of A, and a vertex of face 7 (all weight on one corner).
+  const std::array<double, 3> w = {{0.2, 0.3, 0.5}};
+  const json asked = json::array({{{"face", 100}, {"barycentric", w}}, {{"face", 7}, {"barycentric", {0, 1, 0}}}});
+  const json c = post_json(client, "/api/correspond", {{"labels_a", bands}, {"labels_b", bands}, {"points", asked}});
+  ASSERT_TRUE(c.is_object()) << c;
+  const std::size_t nv = num_vertices(cow);
+  EXPECT_EQ(c["report"]["mapped"], nv);
+  EXPECT_EQ(c["report"]["matched_labels"], json({0, 1, 2, 3}));
+  EXPECT_TRUE(c["report"]["labels_only_in_a"].empty());
+  ASSERT_EQ(c["vertex_point"].size(), 3 * nv);
+  ASSERT_EQ(c["vertex_face"].size(), nv);
+  // Diagonal of B: twice A's.
+  const double tolerance = 1e-6 * mesh_b["diagonal"].get<double>();
+  for(auto v : vertices(cow)) {
+    const auto q = moved(cow.point(v));
+    for(int k = 0; k < 3; ++k)
+      ASSERT_NEAR(c["vertex_point"][3 * v.idx() + k].get<double>(), q[k], tolerance) << "vertex " << v.idx();
+  }
+  auto point_of = [](const json& mesh, std::size_t f, const json& weights) {
+    std::array<double, 3> p{{0., 0., 0.}};
+    for(int k = 0; k < 3; ++k) {
+      const std::size_t v = mesh["faces"][3 * f + k].get<std::size_t>();
+      for(int d = 0; d < 3; ++d) p[d] += weights[k].get<double>() * mesh["vertices"][3 * v + d].get<double>();
+    }
+    return p;
+  };
+  ASSERT_EQ(c["points"].size(), 2u);
+  for(std::size_t i = 0; i < 2; ++i) {
+    const json& image = c["points"][i];
+    ASSERT_TRUE(image.is_object()) << "point " << i << " not mapped";
+    // The asked point of A, moved, is the image; and the image's face and
+    // barycentric coordinates (B's face order) give back that point.
+    const auto on_a = point_of(mesh_a, asked[i]["face"].get<std::size_t>(), asked[i]["barycentric"]);
+    const auto expected = moved(diffuv_test::Mesh::Point(on_a[0], on_a[1], on_a[2]));
+    const auto from_b = point_of(mesh_b, image["face"].get<std::size_t>(), image["barycentric"]);
+    for(int d = 0; d < 3; ++d) {
+      EXPECT_NEAR(image["point"][d].get<double>(), expected[d], tolerance) << "point " << i;
+      EXPECT_NEAR(from_b[d], expected[d], tolerance) << "point " << i;
+    }
+  }
+  // Paired charts: as many as A has, each paired with one of B's.
+  std::set<int> charts_a(c["face_chart_a"].begin(), c["face_chart_a"].end());
+  EXPECT_EQ(charts_a.size(), c["chart_pair"].size());
+  EXPECT_EQ(c["report"]["matched_patches"], c["chart_pair"].size());
+  for(const auto& pair : c["chart_pair"]) EXPECT_GE(pair.get<int>(), 0);
+
+  // The same labels through `diffuv correspond`: the same points on B.
+  std::ostringstream labels;
+  for(int l : bands) labels << l << '\n';
+  const std::string labels_path = write("bands.txt", labels.str());
+  const Tool_run cli = run("correspond " + cow_path + " " + b_path + " --labels-a " + labels_path + " --labels-b " +
+                           labels_path + " -o " + out_dir().string());
+  ASSERT_EQ(cli.code, 0) << cli.err;
+  std::ifstream csv(out_dir() / "correspondence.csv");
+  std::string row;
+  std::getline(csv, row);  // header
+  std::size_t rows = 0;
+  while(std::getline(csv, row)) {
+    std::vector<std::string> cell;
+    std::stringstream fields(row);
+    for(std::string x; std::getline(fields, x, ',');) cell.push_back(x);
+    ASSERT_EQ(cell.size(), 8u) << row;
+    const std::size_t v = std::stoul(cell[0]);
+    EXPECT_EQ(std::stol(cell[1]), c["vertex_face"][v].get<long>()) << "vertex " << v;
+    for(int k = 0; k < 3; ++k)
+      EXPECT_NEAR(std::stod(cell[5 + k]), c["vertex_point"][3 * v + k].get<double>(), 1e-12) << "vertex " << v;
+    ++rows;
+  }
+  EXPECT_EQ(rows, nv);
+
+  // B's labels carried from A's nearest faces: B does not lie on A (moved).
+  auto transfer = client.Post("/api/correspond", json{{"labels_a", bands}, {"transfer_labels", true}}.dump(), "application/json");
+  ASSERT_TRUE(transfer);
+  EXPECT_EQ(transfer->status, 422) << transfer->body.substr(0, 300);
+  EXPECT_NE(transfer->body.find("does not lie on mesh A"), std::string::npos) << transfer->body.substr(0, 300);
+
+  // Refusals.
+  auto refused = [&](httplib::Result res, int status, const std::string& says, const std::string& what) {
+    ASSERT_TRUE(res) << what << ": no answer";
+    EXPECT_EQ(res->status, status) << what << ": " << res->body.substr(0, 300);
+    EXPECT_NE(res->body.find(says), std::string::npos) << what << ": " << res->body.substr(0, 300);
+  };
+  const std::string json_type = "application/json";
+  refused(client.Post("/api/correspond", json{{"labels_a", bands}, {"labels_b", json::array()}}.dump(), json_type), 400,
+          "mesh B has no regions", "B not painted");
+  refused(client.Post("/api/correspond", json{{"labels_a", json::array()}, {"labels_b", bands}}.dump(), json_type), 400,
+          "mesh A has no regions", "A not painted");
+  refused(client.Post("/api/correspond", json{{"labels_a", bands}, {"labels_b", std::vector<int>(3, 0)}}.dump(), json_type),
+          400, "3 labels of mesh B for a mesh of", "B's labels too few");
+  refused(client.Post("/api/correspond", json{{"labels_a", bands}, {"labels_b", std::vector<int>(bands.size(), 9)}}.dump(),
+                      json_type),
+          422, "no patch of A pairs", "no common region");
+  refused(client.Post("/api/correspond",
+                      json{{"labels_a", bands}, {"labels_b", bands}, {"points", {{{"face", 999999}, {"barycentric", w}}}}}.dump(),
+                      json_type),
+          400, "face 999999 is not a face of mesh A", "a point off the mesh");
+  refused(client.Post("/api/correspond",
+                      json{{"labels_a", bands}, {"labels_b", bands}, {"points", {{{"face", 1}, {"barycentric", {1, -1, 0}}}}}}.dump(),
+                      json_type),
+          400, "numbers ≥ 0", "a negative weight");
+  refused(client.Get("/api/correspond"), 405, "takes a POST", "GET on a POST route");
+  refused(client.Get("/api/mesh?mesh=c"), 400, "takes a or b", "a third mesh");
+  EXPECT_EQ(server.stop(SIGTERM, 10), 0);
+}
+
+TEST_F(Serve, WithoutASecondMeshCorrespondenceSaysSo)
+{
+  Server_process server(data_path("meshes/cow.off"), dir_ / "server.err");
+  ASSERT_GT(server.port(), 0) << server.first_line() << slurp(dir_ / "server.err");
+  httplib::Client client("127.0.0.1", server.port());
+  auto none = client.Get("/api/mesh?mesh=b");
+  ASSERT_TRUE(none);
+  EXPECT_EQ(none->status, 404);
+  EXPECT_NE(none->body.find("no second mesh (B) is loaded"), std::string::npos) << none->body;
+  const std::size_t nf = num_faces(diffuv_test::cgal_mesh("cow.off"));
+  auto c = client.Post("/api/correspond", json{{"labels_a", std::vector<int>(nf, 0)}}.dump(), "application/json");
+  ASSERT_TRUE(c);
+  EXPECT_EQ(c->status, 404);
+  // The second mesh, sent by the page, then answers as the first does.
+  auto sent = client.Post("/api/mesh?mesh=b&name=grid.off", grid_off, "application/octet-stream");
+  ASSERT_TRUE(sent);
+  ASSERT_EQ(sent->status, 200) << sent->body;
+  EXPECT_EQ(json::parse(client.Get("/api/mesh?mesh=b")->body)["name"], "grid.off");
+  EXPECT_EQ(json::parse(client.Get("/api/mesh")->body)["name"], "cow.off");
+  const Tool_run lone = run("serve --labels-b " + write("l.txt", "0\n"));
+  EXPECT_EQ(lone.code, 2);
+  EXPECT_NE(lone.err.find("--labels-b"), std::string::npos) << lone.err;
+  EXPECT_EQ(server.stop(SIGTERM, 10), 0);
 }
 
 TEST_F(Serve, RefusesAPortInUseAndAMissingMesh)

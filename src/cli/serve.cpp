@@ -7,7 +7,11 @@
 #include "inputs.h"
 #include "pipeline.h"
 
+#include <diffuv/correspondence/correspondence.h>
+#include <diffuv/correspondence/labelled_atlas.h>
+#include <diffuv/correspondence/nearest_face_labels.h>
 #include <diffuv/output/write_ply.h>
+#include <diffuv/patches/patch_names.h>
 
 #include <CGAL/Bbox_3.h>
 
@@ -47,6 +51,8 @@ using json = nlohmann::json;
 struct Serve_options {
   std::string mesh;
   std::string labels;  // a label file for the mesh given
+  std::string mesh_b;  // a second mesh, for correspondence
+  std::string labels_b;
   int port = 8080;
   std::string host = "127.0.0.1";
   std::string three_dir = "/usr/share/javascript/three";  // Debian's libjs-three
@@ -64,6 +70,24 @@ struct Bad_request {
 // quoting the request) are replaced rather than thrown on.
 std::string as_text(const json& j) { return j.dump(-1, ' ', false, json::error_handler_t::replace); }
 
+
+// Barycentric coordinates in the API's order (the face's vertices as GET
+// /api/mesh lists them: from target(halfedge(f)) on) and in CGAL's
+// Face_location order (from source(halfedge(f)) on).
+std::array<double, 3> api_from_cgal(const std::array<double, 3>& b) { return {{b[1] + 0., b[2] + 0., b[0] + 0.}}; }
+std::array<double, 3> cgal_from_api(const std::array<double, 3>& b) { return {{b[2], b[0], b[1]}}; }
+
+json parsed_request(const std::string& body)
+{
+  json request;
+  try {
+    request = json::parse(body);
+  } catch(const json::exception& e) {
+    throw Bad_request{400, std::string("the request is not JSON: ") + e.what()};
+  }
+  return request;
+}
+
 // A library message about patch p may start with "patch p: "; the API gives the patch apart.
 std::string without_patch_prefix(const std::string& message, std::size_t p)
 {
@@ -74,7 +98,8 @@ std::string without_patch_prefix(const std::string& message, std::size_t p)
 // The state of one painter session: the mesh and what it came with.
 class Painter {
 public:
-  explicit Painter(std::size_t threads) : threads_(threads) {}
+  // which: "a" (the mesh painted, A of a correspondence) or "b" (the second mesh)
+  Painter(std::size_t threads, std::string which) : threads_(threads), which_(std::move(which)) {}
 
   void load(const std::string& path, const std::string& name, const std::string& labels = std::string())
   {
@@ -120,26 +145,26 @@ public:
   // more region (the largest label + 1), as a label file cannot say "none".
   std::vector<int> labels_of(const std::string& body) const
   {
-    json request;
-    try {
-      request = json::parse(body);
-    } catch(const json::exception& e) {
-      throw Bad_request{400, std::string("the request is not JSON: ") + e.what()};
-    }
+    const json request = parsed_request(body);
     if(!request.is_object() || !request.contains("labels") || !request["labels"].is_array())
       throw Bad_request{400, "the request has no \"labels\" array"};
-    const json& labels = request["labels"];
+    return labels_from(request["labels"]);
+  }
+
+  std::vector<int> labels_from(const json& labels, const std::string& which = std::string()) const
+  {
     const std::size_t nf = num_faces(mesh().mesh);
     if(labels.empty()) return {};
     if(labels.size() != nf)
-      throw Bad_request{400, count_text(labels.size(), "label") + " for a mesh of " + count_text(nf, "face")};
+      throw Bad_request{400, count_text(labels.size(), "label") + which + " for a mesh of " + count_text(nf, "face")};
     std::vector<int> result(nf);
     int largest = -1;
     bool unpainted = false;
     for(std::size_t f = 0; f < nf; ++f) {
       const json& l = labels[f];
       if(!l.is_number_integer() || l.get<long long>() < -1 || l.get<long long>() > 1000000)
-        throw Bad_request{400, "label " + std::to_string(f) + " is " + as_text(l) + ", not an integer from -1 to 1000000"};
+        throw Bad_request{400, "label " + std::to_string(f) + which + " is " + as_text(l) +
+                                   ", not an integer from -1 to 1000000"};
       result[f] = l.get<int>();
       largest = std::max(largest, result[f]);
       unpainted = unpainted || result[f] < 0;
@@ -326,14 +351,180 @@ public:
 
   const Input_mesh& mesh() const
   {
-    if(!mesh_) throw Bad_request{404, "no mesh is loaded: open one in the page or POST it to /api/mesh"};
+    if(!mesh_)
+      throw Bad_request{404, which_ == "a" ? "no mesh is loaded: open one in the page or POST it to /api/mesh"
+                                           : "no second mesh (B) is loaded: open one in the page or POST it to "
+                                             "/api/mesh?mesh=b"};
     return *mesh_;
   }
 
 private:
   std::size_t threads_;
+  std::string which_;
   std::unique_ptr<Input_mesh> mesh_;
 };
+
+// POST /api/correspond: every vertex of A (and any points asked for) mapped
+// onto B through (region, u, v), as `diffuv correspond` maps them.
+json correspond(const Painter& a, const Painter& b, const std::string& body)
+{
+  using Labelled = diffuv::Labelled_atlas<Mesh>;
+  using Correspondence = diffuv::Atlas_correspondence<Mesh, Mesh>;
+  const json request = parsed_request(body);
+  if(!request.is_object())
+    throw Bad_request{400, "the request is not a JSON object like {\"labels_a\": [...], \"labels_b\": [...]}"};
+  for(const char* key : {"labels_a", "labels_b"})
+    if(request.contains(key) && !request[key].is_array())
+      throw Bad_request{400, std::string("\"") + key + "\" is not an array of labels"};
+  const Mesh& ma = a.mesh().mesh;
+  const Mesh& mb = b.mesh().mesh;
+  // Labels not sent: the ones the mesh came with.
+  std::vector<int> labels_a = request.contains("labels_a") ? a.labels_from(request["labels_a"], " of mesh A") : a.mesh().face_labels;
+  std::vector<int> labels_b = request.contains("labels_b") ? b.labels_from(request["labels_b"], " of mesh B") : b.mesh().face_labels;
+  if(request.contains("transfer_labels") && !request["transfer_labels"].is_boolean())
+    throw Bad_request{400, "\"transfer_labels\" is not true or false"};
+  const bool transfer = request.value("transfer_labels", false);
+  if(labels_a.empty())
+    throw Bad_request{400, "mesh A has no regions: a correspondence pairs the same painted regions on both meshes"};
+  if(labels_b.empty() && !transfer)
+    throw Bad_request{400, "mesh B has no regions: paint the same regions on it (or ask for \"transfer_labels\" if B "
+                           "lies on top of A)"};
+
+  // The points of A asked for: [{"face": f, "barycentric": [w0, w1, w2]}].
+  std::vector<std::pair<Mesh::Face_index, std::array<double, 3>>> points;
+  if(request.contains("points")) {
+    const json& ps = request["points"];
+    if(!ps.is_array() || ps.size() > 100000) throw Bad_request{400, "\"points\" is not an array of at most 100000 points"};
+    for(std::size_t i = 0; i < ps.size(); ++i) {
+      const json& q = ps[i];
+      const std::string which = "point " + std::to_string(i);
+      if(!q.is_object() || !q.contains("face") || !q["face"].is_number_integer() || !q.contains("barycentric") ||
+         !q["barycentric"].is_array() || q["barycentric"].size() != 3)
+        throw Bad_request{400, which + " is not {\"face\": F, \"barycentric\": [w0, w1, w2]}"};
+      const long long f = q["face"].get<long long>();
+      if(f < 0 || f >= static_cast<long long>(num_faces(ma)))
+        throw Bad_request{400, which + ": face " + std::to_string(f) + " is not a face of mesh A (" +
+                                   count_text(num_faces(ma), "face") + ")"};
+      std::array<double, 3> w{};
+      double sum = 0.;
+      for(int k = 0; k < 3; ++k) {
+        const json& x = q["barycentric"][k];
+        if(!x.is_number() || !std::isfinite(x.get<double>()) || x.get<double>() < 0.)
+          throw Bad_request{400, which + ": its barycentric coordinates must be numbers ≥ 0"};
+        w[k] = x.get<double>();
+        sum += w[k];
+      }
+      if(!(sum > 0.)) throw Bad_request{400, which + ": its barycentric coordinates sum to 0"};
+      for(double& x : w) x /= sum;
+      points.emplace_back(Mesh::Face_index(static_cast<Mesh::size_type>(f)), cgal_from_api(w));
+    }
+  }
+
+  const auto start = std::chrono::steady_clock::now();
+  if(labels_b.empty()) {
+    diffuv::Nearest_face_report lying;
+    labels_b = diffuv::nearest_face_labels(ma, labels_a, mb, &lying);
+    if(!lying.lies_on_source())
+      throw Bad_request{422, "mesh B does not lie on mesh A (the median distance from its faces to A is " +
+                                 std::to_string(std::lround(100. * lying.median_fraction())) +
+                                 " % of A's diagonal): \"transfer_labels\" needs a copy of A in A's place; paint B's regions"};
+  }
+  Labelled atlas_a(ma), atlas_b(mb);
+  try {
+    diffuv::build_labelled_atlas<diffuv::Fmm_distance_tag>(ma, ma.points(), labels_a, atlas_a);
+    diffuv::build_labelled_atlas<diffuv::Fmm_distance_tag>(mb, mb.points(), labels_b, diffuv::atlas_to_follow(atlas_a),
+                                                           atlas_b);
+  } catch(const diffuv::Error& e) {
+    throw Bad_request{422, e.what()};
+  }
+  const Correspondence correspondence(atlas_a, atlas_b);
+  const diffuv::Region_match_report& match = correspondence.report();
+
+  auto finite = [](double x) { return std::isfinite(x) ? json(x) : json(nullptr); };
+  auto image_json = [&](const Correspondence::Point& p) -> json {
+    if(!p.mapped()) return nullptr;
+    const auto w = api_from_cgal(p.barycentric);
+    return {{"face", static_cast<std::size_t>(p.face.idx())},
+            {"barycentric", {finite(w[0]), finite(w[1]), finite(w[2])}},
+            {"point", {finite(p.point.x()), finite(p.point.y()), finite(p.point.z())}},
+            {"inside", p.inside}};
+  };
+  json vertex_face = json::array(), vertex_point = json::array();
+  std::size_t mapped = 0, inside = 0;
+  for(const auto& p : correspondence.map_vertices()) {
+    vertex_face.push_back(p.mapped() ? static_cast<long long>(p.face.idx()) : -1LL);
+    for(int k = 0; k < 3; ++k) vertex_point.push_back(p.mapped() ? finite(p.point[k]) : json(nullptr));
+    mapped += p.mapped();
+    inside += p.mapped() && p.inside;
+  }
+  json asked = json::array();
+  for(const auto& [f, w] : points) asked.push_back(image_json(correspondence.map_point(f, w)));
+
+  // Paired charts share a number, so the page can colour them alike.
+  auto face_charts = [](const Labelled& atlas) {
+    json result = json::array();
+    for(auto f : atlas.mesh().faces()) {
+      const std::size_t c = atlas.atlas.chart_of(f);
+      result.push_back(c == Atlas::no_chart ? -1LL : static_cast<long long>(c));
+    }
+    return result;
+  };
+  json chart_pair = json::array(), chart_name_a = json::array();
+  const std::vector<std::string> names_a = diffuv::patch_names(atlas_a.segmentation);
+  std::vector<std::string> chart_names(atlas_a.atlas.number_of_charts());
+  for(std::size_t p = 0; p < atlas_a.patches.size() && p < names_a.size(); ++p)
+    if(atlas_a.patches[p].status && atlas_a.patches[p].chart < chart_names.size())
+      chart_names[atlas_a.patches[p].chart] = names_a[p];
+  for(std::size_t c = 0; c < chart_names.size(); ++c) {
+    const std::size_t cb = correspondence.chart_b(c);
+    chart_pair.push_back(cb == Correspondence::no_chart ? -1LL : static_cast<long long>(cb));
+    chart_name_a.push_back(chart_names[c]);
+  }
+  auto names = [](const std::vector<diffuv::Patch_key>& keys) {
+    json result = json::array();
+    for(const auto& k : keys) result.push_back(diffuv::patch_name(k));
+    return result;
+  };
+  json problems = json::array();
+  for(const Labelled* atlas : {&atlas_a, &atlas_b}) {
+    const std::vector<std::string> patch = diffuv::patch_names(atlas->segmentation);
+    for(std::size_t p = 0; p < atlas->patches.size() && p < patch.size(); ++p)
+      if(!atlas->patches[p].status)
+        problems.push_back(std::string(atlas == &atlas_a ? "on A" : "on B") + ", patch " + patch[p] +
+                           " could not be mapped: " + atlas->patches[p].status.what());
+  }
+  if(!match.unmatched_patches_a.empty()) problems.push_back("patches of A without a counterpart on B: " + as_text(names(match.unmatched_patches_a)));
+  if(!match.unmatched_patches_b.empty()) problems.push_back("patches of B without a counterpart on A: " + as_text(names(match.unmatched_patches_b)));
+  if(!match.labels_with_different_pieces.empty())
+    problems.push_back("labels cut into a different number of patches on A and B (their pieces pair by decreasing "
+                       "area: check them): " + as_text(json(match.labels_with_different_pieces)));
+  if(match.matched_patches == 0)
+    throw Bad_request{422, "no patch of A pairs with a patch of B (labels of A: " + as_text(json(match.labels_only_in_a)) +
+                               " not on B; of B: " + as_text(json(match.labels_only_in_b)) + " not on A" +
+                               (problems.empty() ? std::string() : "; " + problems[0].get<std::string>()) + ")"};
+  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  return {{"vertex_face", std::move(vertex_face)},
+          {"vertex_point", std::move(vertex_point)},
+          {"points", std::move(asked)},
+          {"face_chart_a", face_charts(atlas_a)},
+          {"face_chart_b", face_charts(atlas_b)},
+          {"chart_pair", std::move(chart_pair)},
+          {"chart_name_a", std::move(chart_name_a)},
+          {"labels_b", transfer && !request.contains("labels_b") ? json(labels_b) : json(nullptr)},
+          {"report",
+           {{"matched_patches", match.matched_patches},
+            {"matched_labels", match.matched_labels},
+            {"labels_only_in_a", match.labels_only_in_a},
+            {"labels_only_in_b", match.labels_only_in_b},
+            {"unmatched_patches_a", names(match.unmatched_patches_a)},
+            {"unmatched_patches_b", names(match.unmatched_patches_b)},
+            {"labels_with_different_pieces", match.labels_with_different_pieces},
+            {"vertices", num_vertices(ma)},
+            {"mapped", mapped},
+            {"inside", inside}}},
+          {"problems", std::move(problems)},
+          {"milliseconds", ms}};
+}
 
 void send_error(httplib::Response& res, int status, const std::string& message)
 {
@@ -366,9 +557,18 @@ void run_server(const Serve_options& options)
   sigaddset(&stop_signals, SIGTERM);
   pthread_sigmask(SIG_BLOCK, &stop_signals, nullptr);
 
-  Painter painter(options.threads);
+  Painter painter_a(options.threads, "a"), painter_b(options.threads, "b");
   if(!options.mesh.empty())
-    painter.load(options.mesh, std::filesystem::path(options.mesh).filename().string(), options.labels);
+    painter_a.load(options.mesh, std::filesystem::path(options.mesh).filename().string(), options.labels);
+  if(!options.mesh_b.empty())
+    painter_b.load(options.mesh_b, std::filesystem::path(options.mesh_b).filename().string(), options.labels_b);
+  // ?mesh=a (the default) or ?mesh=b: which mesh a request is about.
+  auto slot = [&](const httplib::Request& req) -> Painter& {
+    const std::string which = req.has_param("mesh") ? req.get_param_value("mesh") : "a";
+    if(which == "a") return painter_a;
+    if(which == "b") return painter_b;
+    throw Bad_request{400, "?mesh= takes a or b (the second mesh), not '" + which + "'"};
+  };
   std::mutex working;  // one request at a time touches the mesh (CGAL adds property maps even to a const mesh)
 
   // A temporary folder of this server's own (mkdtemp: a fresh name, mode
@@ -426,6 +626,8 @@ void run_server(const Serve_options& options)
         send_error(res, 400, e.what());
       } catch(const diffuv::Error& e) {
         send_error(res, 422, e.what());
+      } catch(const json::exception& e) {  // a value of the wrong type that a check above missed
+        send_error(res, 400, std::string("the request does not say what it should: ") + e.what());
       }
     };
   };
@@ -452,10 +654,11 @@ void run_server(const Serve_options& options)
     std::cerr << "diffuv: warning: " << options.three_dir
               << " is not there: the page needs three.js (Debian package libjs-three)\n";
 
-  server.Get("/api/mesh", api([&](const httplib::Request&, httplib::Response& res) {
-    res.set_content(as_text(painter.mesh_json()), "application/json");
+  server.Get("/api/mesh", api([&](const httplib::Request& req, httplib::Response& res) {
+    res.set_content(as_text(slot(req).mesh_json()), "application/json");
   }));
   server.Post("/api/mesh", api([&](const httplib::Request& req, httplib::Response& res) {
+    Painter& painter = slot(req);
     if(!req.has_param("name")) throw Bad_request{400, "POST /api/mesh needs ?name=FILE.off (or .obj, .ply, .stl)"};
     const std::string name = checked_mesh_name(req.get_param_value("name"));
     if(req.body.empty()) throw Bad_request{400, name + ": the request has no file in its body"};
@@ -465,7 +668,7 @@ void run_server(const Serve_options& options)
       out.write(req.body.data(), static_cast<std::streamsize>(req.body.size()));
       if(!out) throw Bad_request{500, "cannot keep the mesh in " + uploads.string()};
     }
-    Painter next(options.threads);  // the mesh in use stays if the new one cannot be read
+    Painter next(options.threads, req.has_param("mesh") ? req.get_param_value("mesh") : "a");  // the mesh in use stays if the new one cannot be read
     try {
       next.load(file.string(), name);
     } catch(const diffuv::Error& e) {
@@ -480,12 +683,15 @@ void run_server(const Serve_options& options)
     res.set_content(as_text(painter.mesh_json()), "application/json");
   }));
   server.Post("/api/layout", api([&](const httplib::Request& req, httplib::Response& res) {
+    Painter& painter = slot(req);
     res.set_content(as_text(painter.layout(painter.labels_of(req.body), false)), "application/json");
   }));
   server.Post("/api/param", api([&](const httplib::Request& req, httplib::Response& res) {
+    Painter& painter = slot(req);
     res.set_content(as_text(painter.layout(painter.labels_of(req.body), true)), "application/json");
   }));
   server.Post("/api/labels.txt", api([&](const httplib::Request& req, httplib::Response& res) {
+    const Painter& painter = slot(req);
     const std::vector<int> labels = painter.file_labels(painter.labels_of(req.body));
     std::string text = "# diffuv labels: one region per face of " + painter.mesh().path + ", in the file's order\n";
     for(int l : labels) text += std::to_string(l) + '\n';
@@ -493,9 +699,20 @@ void run_server(const Serve_options& options)
     res.set_header("Content-Disposition", "attachment; filename=\"labels.txt\"");
   }));
   server.Post("/api/painted.ply", api([&](const httplib::Request& req, httplib::Response& res) {
+    const Painter& painter = slot(req);
     res.set_content(painter.painted_ply(painter.labels_of(req.body)), "application/octet-stream");
     res.set_header("Content-Disposition", "attachment; filename=\"painted.ply\"");
   }));
+
+  server.Post("/api/correspond", api([&](const httplib::Request& req, httplib::Response& res) {
+    res.set_content(as_text(correspond(painter_a, painter_b, req.body)), "application/json");
+  }));
+  // The routes that take a body answer other methods with 405, not "no such page".
+  for(const char* route : {"/api/layout", "/api/param", "/api/labels.txt", "/api/painted.ply", "/api/correspond"})
+    server.Get(route, [route](const httplib::Request&, httplib::Response& res) {
+      send_error(res, 405, std::string(route) + " takes a POST with a JSON body (doc/painter.md)");
+      res.set_header("Allow", "POST");
+    });
 
   int port = options.port;
   if(port == 0) {
@@ -514,7 +731,8 @@ void run_server(const Serve_options& options)
               << ": anyone who can reach it can load meshes into this server" << std::endl;
   std::cout << "diffuv: serving http://" << shown_host << ':' << port << "/"
             << (any_address ? " (on every address of this machine)" : "")
-            << (options.mesh.empty() ? "" : " (" + options.mesh + ")") << "; Ctrl-C stops it" << std::endl;
+            << (options.mesh.empty() ? "" : " (" + options.mesh + (options.mesh_b.empty() ? "" : " and " + options.mesh_b) + ")")
+            << "; Ctrl-C stops it" << std::endl;
 
   // Before a body is read: refuse what would slip past the size limit
   // (chunked or compressed bodies), form-encoded bodies (httplib caps them at
@@ -527,6 +745,7 @@ void run_server(const Serve_options& options)
       send_error(res, status, message);
       return httplib::Server::HandlerResponse::Handled;
     };
+    if(req.path.find('\0') != std::string::npos) return refuse(400, "the path has a NUL byte");
     const std::string host = req.get_header_value("Host");
     if(loopback && std::find(own_hosts.begin(), own_hosts.end(), host) == own_hosts.end())
       return refuse(403, "this server answers requests for 127.0.0.1:" + port_text + " only, not for '" + host + "'");
@@ -576,8 +795,13 @@ void add_serve_command(CLI::App& app)
   cmd->add_option("mesh", options->mesh, "The mesh to open (OFF, OBJ, PLY, STL; painted colours or labels are read); "
                                          "default: none, open one in the page")
       ->check(CLI::ExistingFile);
+  cmd->add_option("mesh_b", options->mesh_b,
+                  "A second mesh, to paint the same regions on and see the correspondence (as `diffuv correspond "
+                  "MESH MESH_B`); default: none, open one in the page")
+      ->check(CLI::ExistingFile);
   cmd->add_option("--labels", options->labels, "A label file for the mesh (one region per polygon of the file, as param --labels reads), to go on painting")
       ->check(CLI::ExistingFile);
+  cmd->add_option("--labels-b", options->labels_b, "A label file for the second mesh")->check(CLI::ExistingFile);
   cmd->add_option("--port", options->port, "The port to listen on (0: any free port, printed)")
       ->check(number_in(0, 65535))
       ->capture_default_str();
@@ -592,6 +816,8 @@ void add_serve_command(CLI::App& app)
   cmd->callback([options] {
     if(!options->labels.empty() && options->mesh.empty())
       throw CLI::ValidationError("--labels", "needs a mesh to go with (diffuv serve MESH --labels FILE)");
+    if(!options->labels_b.empty() && options->mesh_b.empty())
+      throw CLI::ValidationError("--labels-b", "needs a second mesh to go with (diffuv serve MESH MESH_B --labels-b FILE)");
     run_server(*options);
   });
 }
