@@ -19,6 +19,7 @@ set(diffuv_sweep_not_injective
   couplingdown.off         # CAD strips: two fallback patches of 11 and 13 runs with no interior path between junctions, one flat triangle each that no hand-off takes (one-to-one before the cuts between junctions)
   elephant-with-holes.off  # as cheese: strips around its holes
   mech-holes-shark.off     # CAD strips around holes
+  pig.stl                  # 17 parts; since bad patches of 100 faces may be split (2026-12-06), a 17-vertex fallback patch of 5 runs whose corners, chosen by its maps, leave one flat triangle
   polygon_mesh.off         # refused before the repair split its non-manifold vertices; a 10-face fallback patch of 7 runs keeps one flat triangle
 )
 foreach(mesh IN LISTS diffuv_sweep_meshes)

@@ -4,6 +4,8 @@
 // read back, the fan split it is made of, and the judge that refines it.
 #include "test_layout_data.h"
 
+#include <diffuv/parameterization/diffusion_patches.h>
+
 #include <CGAL/Polygon_mesh_processing/orientation.h>
 
 TEST(QuadLayout, CowIsAConformingLayoutOfQuads)
@@ -733,6 +735,33 @@ TEST(QuadLayout, LargePatchesInSmallCellsAreRefinedToo)
   EXPECT_LT(refined.area_mean, 3.0);
   const diffuv::Distortion_summary off = atlas_quality(std::numeric_limits<std::size_t>::max());
   EXPECT_GT(off.stretch_l2, 10.0);
+}
+
+// The coarse triceratops (2,832 vertices): a 119-face patch around a horn,
+// in a cell below `min_split_faces`, collapsed the horn in its map (L2 21)
+// until bad patches of 100 faces could have their cell split.
+TEST(QuadLayout, SmallBadPatchesOfACoarseMeshAreRefinedToo)
+{
+  const Mesh& m = cgal_mesh("triceratops.off");
+  auto atlas_quality = [&](std::size_t min_split_patch_faces) {
+    diffuv::Patching_options options;
+    options.quads.min_split_patch_faces = min_split_patch_faces;
+    Seg seg;
+    EXPECT_TRUE(diffuv::diffusion_patches(m, m.points(), std::vector<int>(), seg, options).ok());
+    diffuv::Uv_atlas<Mesh> atlas(m);
+    diffuv::Distortion_summary total;
+    for(const auto& r : diffuv::parameterize_patches(m, m.points(), seg, atlas))
+      if(r.status)
+        total = diffuv::combined(total, diffuv::measure_distortion(m, m.points(), atlas.chart(r.chart).faces,
+                                                                   atlas.chart_texture_map(r.chart)));
+    EXPECT_TRUE(total.injective());
+    return total;
+  };
+  const diffuv::Distortion_summary refined = atlas_quality(diffuv::Quad_layout_options().min_split_patch_faces);
+  EXPECT_LT(refined.stretch_l2, 1.8);
+  EXPECT_LT(refined.area_mean, 2.0);
+  const diffuv::Distortion_summary at_240 = atlas_quality(240);
+  EXPECT_GT(at_240.stretch_l2, 2.2);
 }
 
 TEST(QuadLayout, CornersLeaveNoFlatTriangleWhereAnyPlacementWould)

@@ -25,9 +25,10 @@ struct Quad_layout_options {
   /// a patch of at least this many faces whose map is bad may have its cell
   /// split whatever the cell's size: such a patch is most of its cell, and
   /// large enough that the halves can still be fanned (a cow's leg left as
-  /// one 255-face quad by a layout of labels folded almost whole: L2 130;
+  /// one 255-face quad by a layout of labels folded almost whole: L2 130; a
+  /// 119-face patch of the coarse triceratops around a horn: L2 21;
   /// doc/layout.md, "Large patches in small cells")
-  std::size_t min_split_patch_faces = 240;
+  std::size_t min_split_patch_faces = 100;
   std::size_t refine_rounds = 4;       ///< rounds of refinement asked by the judge (see `quad_layout()`)
   /// Labelled regions stay whole when they are all discs and at least this
   /// share of their faces lie in regions with exactly four runs of neighbours
