@@ -422,6 +422,22 @@ TEST_F(Serve, SecondMeshAndCorrespondenceAsDiffuvCorrespondGivesThem)
   EXPECT_EQ(c["report"]["matched_patches"], c["chart_pair"].size());
   for(const auto& pair : c["chart_pair"]) EXPECT_GE(pair.get<int>(), 0);
 
+  // Asked again with the same labels (a picked point): the correspondence
+  // is kept, and only the points come back; faces left unpainted on both
+  // meshes are one region of the same label on both.
+  const json again = post_json(client, "/api/correspond",
+                               {{"labels_a", bands}, {"labels_b", bands}, {"points", asked}, {"only_points", true}});
+  EXPECT_TRUE(again["cached"].get<bool>());
+  EXPECT_FALSE(again.contains("vertex_point"));
+  EXPECT_EQ(again["points"], c["points"]);
+  std::vector<int> top_unpainted = bands;
+  for(int& l : top_unpainted)
+    if(l == 3) l = -1;
+  const json unpainted = post_json(client, "/api/correspond", {{"labels_a", top_unpainted}, {"labels_b", top_unpainted}});
+  EXPECT_TRUE(unpainted["cached"].get<bool>()) << "the unpainted faces are label 3 on both: the regions asked before";
+  EXPECT_EQ(unpainted["report"]["matched_labels"], json({0, 1, 2, 3}));
+  EXPECT_EQ(unpainted["vertex_point"], c["vertex_point"]);
+
   // The same labels through `diffuv correspond`: the same points on B.
   std::ostringstream labels;
   for(int l : bands) labels << l << '\n';

@@ -20,6 +20,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cstdint>
 #include <cmath>
 #include <csignal>
 #include <cstdio>
@@ -109,7 +110,12 @@ public:
     if(num_faces(in.mesh) == 0) throw Bad_request{400, name + ": the mesh has no faces"};
     in.path = name;
     mesh_ = std::make_unique<Input_mesh>(std::move(in));
+    static std::atomic<std::uint64_t> loads{0};
+    generation_ = ++loads;
   }
+
+  // Which load this mesh came from: a mesh loaded later has another number.
+  std::uint64_t generation() const { return generation_; }
 
   bool loaded() const { return mesh_ != nullptr; }
 
@@ -151,7 +157,8 @@ public:
     return labels_from(request["labels"]);
   }
 
-  std::vector<int> labels_from(const json& labels, const std::string& which = std::string()) const
+  // keep_unpainted: -1 stays -1 (the caller gives it a label).
+  std::vector<int> labels_from(const json& labels, const std::string& which = std::string(), bool keep_unpainted = false) const
   {
     const std::size_t nf = num_faces(mesh().mesh);
     if(labels.empty()) return {};
@@ -170,7 +177,7 @@ public:
       unpainted = unpainted || result[f] < 0;
     }
     if(largest < 0) return {};  // nothing painted: automatic
-    if(unpainted)
+    if(unpainted && !keep_unpainted)
       for(int& l : result)
         if(l < 0) l = largest + 1;
     return result;
@@ -362,33 +369,72 @@ private:
   std::size_t threads_;
   std::string which_;
   std::unique_ptr<Input_mesh> mesh_;
+  std::uint64_t generation_ = 0;
+};
+
+// The last correspondence built, kept while the meshes and the labels stay:
+// the page asks again for every picked point.
+struct Correspondence_cache {
+  using Labelled = diffuv::Labelled_atlas<Mesh>;
+  using Correspondence = diffuv::Atlas_correspondence<Mesh, Mesh>;
+  std::uint64_t generation_a = 0, generation_b = 0;
+  std::vector<int> labels_a, labels_b;
+  bool transfer = false;
+  std::unique_ptr<Labelled> atlas_a, atlas_b;       // destroyed after the correspondence (declared before it)
+  std::unique_ptr<Correspondence> correspondence;
+  json answer;  // all but the points
+
+  void clear()
+  {
+    correspondence.reset();
+    atlas_b.reset();
+    atlas_a.reset();
+    answer = json();
+  }
+  bool holds(std::uint64_t a, std::uint64_t b, const std::vector<int>& la, const std::vector<int>& lb, bool t) const
+  {
+    return correspondence && a == generation_a && b == generation_b && la == labels_a && lb == labels_b && t == transfer;
+  }
 };
 
 // POST /api/correspond: every vertex of A (and any points asked for) mapped
 // onto B through (region, u, v), as `diffuv correspond` maps them.
-json correspond(const Painter& a, const Painter& b, const std::string& body)
+json correspond(const Painter& a, const Painter& b, const std::string& body, Correspondence_cache& cache)
 {
-  using Labelled = diffuv::Labelled_atlas<Mesh>;
-  using Correspondence = diffuv::Atlas_correspondence<Mesh, Mesh>;
+  using Labelled = Correspondence_cache::Labelled;
+  using Correspondence = Correspondence_cache::Correspondence;
   const json request = parsed_request(body);
   if(!request.is_object())
     throw Bad_request{400, "the request is not a JSON object like {\"labels_a\": [...], \"labels_b\": [...]}"};
   for(const char* key : {"labels_a", "labels_b"})
     if(request.contains(key) && !request[key].is_array())
       throw Bad_request{400, std::string("\"") + key + "\" is not an array of labels"};
+  for(const char* key : {"transfer_labels", "only_points"})
+    if(request.contains(key) && !request[key].is_boolean())
+      throw Bad_request{400, std::string("\"") + key + "\" is not true or false"};
+  const bool transfer = request.value("transfer_labels", false);
+  const bool only_points = request.value("only_points", false);
   const Mesh& ma = a.mesh().mesh;
   const Mesh& mb = b.mesh().mesh;
-  // Labels not sent: the ones the mesh came with.
-  std::vector<int> labels_a = request.contains("labels_a") ? a.labels_from(request["labels_a"], " of mesh A") : a.mesh().face_labels;
-  std::vector<int> labels_b = request.contains("labels_b") ? b.labels_from(request["labels_b"], " of mesh B") : b.mesh().face_labels;
-  if(request.contains("transfer_labels") && !request["transfer_labels"].is_boolean())
-    throw Bad_request{400, "\"transfer_labels\" is not true or false"};
-  const bool transfer = request.value("transfer_labels", false);
+  // Labels not sent: the ones the mesh came with (B's are ignored when they
+  // are to be carried from A). Faces not painted (-1) on either mesh are one
+  // region of the same label on both, so that they pair.
+  std::vector<int> labels_a = request.contains("labels_a") ? a.labels_from(request["labels_a"], " of mesh A", true)
+                                                           : a.mesh().face_labels;
+  std::vector<int> labels_b = request.contains("labels_b") ? b.labels_from(request["labels_b"], " of mesh B", true)
+                              : transfer                   ? std::vector<int>()
+                                                           : b.mesh().face_labels;
   if(labels_a.empty())
     throw Bad_request{400, "mesh A has no regions: a correspondence pairs the same painted regions on both meshes"};
   if(labels_b.empty() && !transfer)
     throw Bad_request{400, "mesh B has no regions: paint the same regions on it (or ask for \"transfer_labels\" if B "
                            "lies on top of A)"};
+  int largest = -1;
+  for(const auto* labels : {&labels_a, &labels_b})
+    for(int l : *labels) largest = std::max(largest, l);
+  for(auto* labels : {&labels_a, &labels_b})
+    for(int& l : *labels)
+      if(l < 0) l = largest + 1;
 
   // The points of A asked for: [{"face": f, "barycentric": [w0, w1, w2]}].
   std::vector<std::pair<Mesh::Face_index, std::array<double, 3>>> points;
@@ -421,109 +467,133 @@ json correspond(const Painter& a, const Painter& b, const std::string& body)
   }
 
   const auto start = std::chrono::steady_clock::now();
-  if(labels_b.empty()) {
-    diffuv::Nearest_face_report lying;
-    labels_b = diffuv::nearest_face_labels(ma, labels_a, mb, &lying);
-    if(!lying.lies_on_source())
-      throw Bad_request{422, "mesh B does not lie on mesh A (the median distance from its faces to A is " +
-                                 std::to_string(std::lround(100. * lying.median_fraction())) +
-                                 " % of A's diagonal): \"transfer_labels\" needs a copy of A in A's place; paint B's regions"};
-  }
-  Labelled atlas_a(ma), atlas_b(mb);
-  try {
-    diffuv::build_labelled_atlas<diffuv::Fmm_distance_tag>(ma, ma.points(), labels_a, atlas_a);
-    diffuv::build_labelled_atlas<diffuv::Fmm_distance_tag>(mb, mb.points(), labels_b, diffuv::atlas_to_follow(atlas_a),
-                                                           atlas_b);
-  } catch(const diffuv::Error& e) {
-    throw Bad_request{422, e.what()};
-  }
-  const Correspondence correspondence(atlas_a, atlas_b);
-  const diffuv::Region_match_report& match = correspondence.report();
-
   auto finite = [](double x) { return std::isfinite(x) ? json(x) : json(nullptr); };
-  auto image_json = [&](const Correspondence::Point& p) -> json {
-    if(!p.mapped()) return nullptr;
-    const auto w = api_from_cgal(p.barycentric);
-    return {{"face", static_cast<std::size_t>(p.face.idx())},
-            {"barycentric", {finite(w[0]), finite(w[1]), finite(w[2])}},
-            {"point", {finite(p.point.x()), finite(p.point.y()), finite(p.point.z())}},
-            {"inside", p.inside}};
-  };
-  json vertex_face = json::array(), vertex_point = json::array();
-  std::size_t mapped = 0, inside = 0;
-  for(const auto& p : correspondence.map_vertices()) {
-    vertex_face.push_back(p.mapped() ? static_cast<long long>(p.face.idx()) : -1LL);
-    for(int k = 0; k < 3; ++k) vertex_point.push_back(p.mapped() ? finite(p.point[k]) : json(nullptr));
-    mapped += p.mapped();
-    inside += p.mapped() && p.inside;
-  }
-  json asked = json::array();
-  for(const auto& [f, w] : points) asked.push_back(image_json(correspondence.map_point(f, w)));
-
-  // Paired charts share a number, so the page can colour them alike.
-  auto face_charts = [](const Labelled& atlas) {
-    json result = json::array();
-    for(auto f : atlas.mesh().faces()) {
-      const std::size_t c = atlas.atlas.chart_of(f);
-      result.push_back(c == Atlas::no_chart ? -1LL : static_cast<long long>(c));
+  const bool cached = cache.holds(a.generation(), b.generation(), labels_a, labels_b, transfer);
+  if(!cached) {
+    cache.clear();
+    const std::vector<int> sent_a = labels_a, sent_b = labels_b;
+    if(labels_b.empty()) {
+      diffuv::Nearest_face_report lying;
+      labels_b = diffuv::nearest_face_labels(ma, labels_a, mb, &lying);
+      if(!lying.lies_on_source())
+        throw Bad_request{422, "mesh B does not lie on mesh A (the median distance from its faces to A is " +
+                                   std::to_string(std::lround(100. * lying.median_fraction())) +
+                                   " % of A's diagonal): \"transfer_labels\" needs a copy of A in A's place; paint B's regions"};
     }
-    return result;
-  };
-  json chart_pair = json::array(), chart_name_a = json::array();
-  const std::vector<std::string> names_a = diffuv::patch_names(atlas_a.segmentation);
-  std::vector<std::string> chart_names(atlas_a.atlas.number_of_charts());
-  for(std::size_t p = 0; p < atlas_a.patches.size() && p < names_a.size(); ++p)
-    if(atlas_a.patches[p].status && atlas_a.patches[p].chart < chart_names.size())
-      chart_names[atlas_a.patches[p].chart] = names_a[p];
-  for(std::size_t c = 0; c < chart_names.size(); ++c) {
-    const std::size_t cb = correspondence.chart_b(c);
-    chart_pair.push_back(cb == Correspondence::no_chart ? -1LL : static_cast<long long>(cb));
-    chart_name_a.push_back(chart_names[c]);
+    auto atlas_a = std::make_unique<Labelled>(ma), atlas_b = std::make_unique<Labelled>(mb);
+    try {
+      diffuv::build_labelled_atlas<diffuv::Fmm_distance_tag>(ma, ma.points(), labels_a, *atlas_a);
+      diffuv::build_labelled_atlas<diffuv::Fmm_distance_tag>(mb, mb.points(), labels_b, diffuv::atlas_to_follow(*atlas_a),
+                                                             *atlas_b);
+    } catch(const diffuv::Error& e) {
+      throw Bad_request{422, e.what()};
+    }
+    auto correspondence = std::make_unique<Correspondence>(*atlas_a, *atlas_b);
+    const diffuv::Region_match_report& match = correspondence->report();
+
+    json vertex_face = json::array(), vertex_point = json::array();
+    std::size_t mapped = 0, inside = 0;
+    for(const auto& p : correspondence->map_vertices()) {
+      vertex_face.push_back(p.mapped() ? static_cast<long long>(p.face.idx()) : -1LL);
+      for(int k = 0; k < 3; ++k) vertex_point.push_back(p.mapped() ? finite(p.point[k]) : json(nullptr));
+      mapped += p.mapped();
+      inside += p.mapped() && p.inside;
+    }
+    // Paired charts share a number, so the page can colour them alike.
+    auto face_charts = [](const Labelled& atlas) {
+      json result = json::array();
+      for(auto f : atlas.mesh().faces()) {
+        const std::size_t c = atlas.atlas.chart_of(f);
+        result.push_back(c == Atlas::no_chart ? -1LL : static_cast<long long>(c));
+      }
+      return result;
+    };
+    // Each chart's patch name (`correspond` prints them: label.part).
+    auto chart_names = [](const Labelled& atlas) {
+      const std::vector<std::string> names = diffuv::patch_names(atlas.segmentation);
+      json result(std::vector<std::string>(atlas.atlas.number_of_charts()));
+      for(std::size_t p = 0; p < atlas.patches.size() && p < names.size(); ++p)
+        if(atlas.patches[p].status && atlas.patches[p].chart < result.size()) result[atlas.patches[p].chart] = names[p];
+      return result;
+    };
+    json chart_pair = json::array();
+    for(std::size_t c = 0; c < atlas_a->atlas.number_of_charts(); ++c) {
+      const std::size_t cb = correspondence->chart_b(c);
+      chart_pair.push_back(cb == Correspondence::no_chart ? -1LL : static_cast<long long>(cb));
+    }
+    auto names = [](const std::vector<diffuv::Patch_key>& keys) {
+      json result = json::array();
+      for(const auto& k : keys) result.push_back(diffuv::patch_name(k));
+      return result;
+    };
+    json problems = json::array();
+    for(const Labelled* atlas : {atlas_a.get(), atlas_b.get()}) {
+      const std::vector<std::string> patch = diffuv::patch_names(atlas->segmentation);
+      for(std::size_t p = 0; p < atlas->patches.size() && p < patch.size(); ++p)
+        if(!atlas->patches[p].status)
+          problems.push_back(std::string(atlas == atlas_a.get() ? "on A" : "on B") + ", patch " + patch[p] +
+                             " could not be mapped: " + atlas->patches[p].status.what());
+    }
+    if(!match.unmatched_patches_a.empty())
+      problems.push_back("patches of A without a counterpart on B: " + as_text(names(match.unmatched_patches_a)));
+    if(!match.unmatched_patches_b.empty())
+      problems.push_back("patches of B without a counterpart on A: " + as_text(names(match.unmatched_patches_b)));
+    if(!match.labels_with_different_pieces.empty())
+      problems.push_back("labels cut into a different number of patches on A and B (their pieces pair by decreasing "
+                         "area: check them): " + as_text(json(match.labels_with_different_pieces)));
+    if(match.matched_patches == 0)
+      throw Bad_request{422, "no patch of A pairs with a patch of B (labels of A: " + as_text(json(match.labels_only_in_a)) +
+                                 " not on B; of B: " + as_text(json(match.labels_only_in_b)) + " not on A" +
+                                 (problems.empty() ? std::string() : "; " + problems[0].get<std::string>()) + ")"};
+    cache.answer = {{"vertex_face", std::move(vertex_face)},
+                    {"vertex_point", std::move(vertex_point)},
+                    {"face_chart_a", face_charts(*atlas_a)},
+                    {"face_chart_b", face_charts(*atlas_b)},
+                    {"chart_pair", std::move(chart_pair)},
+                    {"chart_name_a", chart_names(*atlas_a)},
+                    {"chart_name_b", chart_names(*atlas_b)},
+                    {"labels_b", transfer && sent_b.empty() ? json(labels_b) : json(nullptr)},
+                    {"report",
+                     {{"matched_patches", match.matched_patches},
+                      {"matched_labels", match.matched_labels},
+                      {"labels_only_in_a", match.labels_only_in_a},
+                      {"labels_only_in_b", match.labels_only_in_b},
+                      {"unmatched_patches_a", names(match.unmatched_patches_a)},
+                      {"unmatched_patches_b", names(match.unmatched_patches_b)},
+                      {"labels_with_different_pieces", match.labels_with_different_pieces},
+                      {"vertices", num_vertices(ma)},
+                      {"mapped", mapped},
+                      {"inside", inside}}},
+                    {"problems", std::move(problems)}};
+    cache.generation_a = a.generation();
+    cache.generation_b = b.generation();
+    cache.labels_a = sent_a;
+    cache.labels_b = sent_b;
+    cache.transfer = transfer;
+    cache.atlas_a = std::move(atlas_a);
+    cache.atlas_b = std::move(atlas_b);
+    cache.correspondence = std::move(correspondence);
   }
-  auto names = [](const std::vector<diffuv::Patch_key>& keys) {
-    json result = json::array();
-    for(const auto& k : keys) result.push_back(diffuv::patch_name(k));
-    return result;
-  };
-  json problems = json::array();
-  for(const Labelled* atlas : {&atlas_a, &atlas_b}) {
-    const std::vector<std::string> patch = diffuv::patch_names(atlas->segmentation);
-    for(std::size_t p = 0; p < atlas->patches.size() && p < patch.size(); ++p)
-      if(!atlas->patches[p].status)
-        problems.push_back(std::string(atlas == &atlas_a ? "on A" : "on B") + ", patch " + patch[p] +
-                           " could not be mapped: " + atlas->patches[p].status.what());
+
+  json asked = json::array();
+  for(const auto& [f, w] : points) {
+    const auto p = cache.correspondence->map_point(f, w);
+    if(!p.mapped()) {
+      asked.push_back(nullptr);
+      continue;
+    }
+    const auto bary = api_from_cgal(p.barycentric);
+    asked.push_back({{"face", static_cast<std::size_t>(p.face.idx())},
+                     {"barycentric", {finite(bary[0]), finite(bary[1]), finite(bary[2])}},
+                     {"point", {finite(p.point.x()), finite(p.point.y()), finite(p.point.z())}},
+                     {"chart", p.chart},
+                     {"inside", p.inside}});
   }
-  if(!match.unmatched_patches_a.empty()) problems.push_back("patches of A without a counterpart on B: " + as_text(names(match.unmatched_patches_a)));
-  if(!match.unmatched_patches_b.empty()) problems.push_back("patches of B without a counterpart on A: " + as_text(names(match.unmatched_patches_b)));
-  if(!match.labels_with_different_pieces.empty())
-    problems.push_back("labels cut into a different number of patches on A and B (their pieces pair by decreasing "
-                       "area: check them): " + as_text(json(match.labels_with_different_pieces)));
-  if(match.matched_patches == 0)
-    throw Bad_request{422, "no patch of A pairs with a patch of B (labels of A: " + as_text(json(match.labels_only_in_a)) +
-                               " not on B; of B: " + as_text(json(match.labels_only_in_b)) + " not on A" +
-                               (problems.empty() ? std::string() : "; " + problems[0].get<std::string>()) + ")"};
-  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  return {{"vertex_face", std::move(vertex_face)},
-          {"vertex_point", std::move(vertex_point)},
-          {"points", std::move(asked)},
-          {"face_chart_a", face_charts(atlas_a)},
-          {"face_chart_b", face_charts(atlas_b)},
-          {"chart_pair", std::move(chart_pair)},
-          {"chart_name_a", std::move(chart_name_a)},
-          {"labels_b", transfer && !request.contains("labels_b") ? json(labels_b) : json(nullptr)},
-          {"report",
-           {{"matched_patches", match.matched_patches},
-            {"matched_labels", match.matched_labels},
-            {"labels_only_in_a", match.labels_only_in_a},
-            {"labels_only_in_b", match.labels_only_in_b},
-            {"unmatched_patches_a", names(match.unmatched_patches_a)},
-            {"unmatched_patches_b", names(match.unmatched_patches_b)},
-            {"labels_with_different_pieces", match.labels_with_different_pieces},
-            {"vertices", num_vertices(ma)},
-            {"mapped", mapped},
-            {"inside", inside}}},
-          {"problems", std::move(problems)},
-          {"milliseconds", ms}};
+  json out = only_points ? json::object() : cache.answer;
+  out["points"] = std::move(asked);
+  out["cached"] = cached;
+  out["milliseconds"] = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  return out;
 }
 
 void send_error(httplib::Response& res, int status, const std::string& message)
@@ -562,6 +632,7 @@ void run_server(const Serve_options& options)
     painter_a.load(options.mesh, std::filesystem::path(options.mesh).filename().string(), options.labels);
   if(!options.mesh_b.empty())
     painter_b.load(options.mesh_b, std::filesystem::path(options.mesh_b).filename().string(), options.labels_b);
+  Correspondence_cache correspondence_cache;  // cleared before a mesh it refers to goes
   // ?mesh=a (the default) or ?mesh=b: which mesh a request is about.
   auto slot = [&](const httplib::Request& req) -> Painter& {
     const std::string which = req.has_param("mesh") ? req.get_param_value("mesh") : "a";
@@ -679,6 +750,7 @@ void run_server(const Serve_options& options)
       throw Bad_request{400, what};
     }
     std::filesystem::remove(file);
+    correspondence_cache.clear();  // its atlases refer to the mesh replaced
     painter = std::move(next);
     res.set_content(as_text(painter.mesh_json()), "application/json");
   }));
@@ -705,7 +777,7 @@ void run_server(const Serve_options& options)
   }));
 
   server.Post("/api/correspond", api([&](const httplib::Request& req, httplib::Response& res) {
-    res.set_content(as_text(correspond(painter_a, painter_b, req.body)), "application/json");
+    res.set_content(as_text(correspond(painter_a, painter_b, req.body, correspondence_cache)), "application/json");
   }));
   // The routes that take a body answer other methods with 405, not "no such page".
   for(const char* route : {"/api/layout", "/api/param", "/api/labels.txt", "/api/painted.ply", "/api/correspond"})
