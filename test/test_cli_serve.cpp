@@ -532,6 +532,11 @@ TEST_F(Serve, RefusesAPortInUseAndAMissingMesh)
   const Tool_run threads = run("serve --threads 99999");
   EXPECT_EQ(threads.code, 2);
   EXPECT_NE(threads.err.find("--threads"), std::string::npos) << threads.err;
+  // A mesh that needs a repair: refused with --strict-input, naming the problem.
+  const std::string twice = write("twice.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n3 0 1 2\n3 0 1 2\n");
+  const Tool_run strict = run("serve " + twice + " --strict-input --port 0");
+  EXPECT_EQ(strict.code, 1);
+  EXPECT_NE(strict.err.find("twice.off"), std::string::npos) << strict.err;
   const Tool_run missing = run("serve " + (dir_ / "nothing.off").string());
   EXPECT_EQ(missing.code, 2);
   EXPECT_NE(missing.err.find("nothing.off"), std::string::npos) << missing.err;

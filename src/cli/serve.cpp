@@ -59,6 +59,7 @@ struct Serve_options {
   std::string three_dir = "/usr/share/javascript/three";  // Debian's libjs-three
   std::size_t threads = 0;
   std::size_t max_request_mb = 512;  // a mesh of a few million faces as ASCII
+  bool strict_input = false;
 };
 
 // A request the server refuses: its status and message.
@@ -100,12 +101,15 @@ std::string without_patch_prefix(const std::string& message, std::size_t p)
 class Painter {
 public:
   // which: "a" (the mesh painted, A of a correspondence) or "b" (the second mesh)
-  Painter(std::size_t threads, std::string which) : threads_(threads), which_(std::move(which)) {}
+  Painter(std::size_t threads, std::string which, bool strict_input)
+    : threads_(threads), which_(std::move(which)), strict_input_(strict_input)
+  {}
 
   void load(const std::string& path, const std::string& name, const std::string& labels = std::string())
   {
     Patch_cli_options o;
     o.labels = labels;
+    o.strict_input = strict_input_;
     Input_mesh in = read_input(path, o);
     if(num_faces(in.mesh) == 0) throw Bad_request{400, name + ": the mesh has no faces"};
     in.path = name;
@@ -368,6 +372,7 @@ public:
 private:
   std::size_t threads_;
   std::string which_;
+  bool strict_input_;
   std::unique_ptr<Input_mesh> mesh_;
   std::uint64_t generation_ = 0;
 };
@@ -627,7 +632,7 @@ void run_server(const Serve_options& options)
   sigaddset(&stop_signals, SIGTERM);
   pthread_sigmask(SIG_BLOCK, &stop_signals, nullptr);
 
-  Painter painter_a(options.threads, "a"), painter_b(options.threads, "b");
+  Painter painter_a(options.threads, "a", options.strict_input), painter_b(options.threads, "b", options.strict_input);
   if(!options.mesh.empty())
     painter_a.load(options.mesh, std::filesystem::path(options.mesh).filename().string(), options.labels);
   if(!options.mesh_b.empty())
@@ -739,7 +744,7 @@ void run_server(const Serve_options& options)
       out.write(req.body.data(), static_cast<std::streamsize>(req.body.size()));
       if(!out) throw Bad_request{500, "cannot keep the mesh in " + uploads.string()};
     }
-    Painter next(options.threads, req.has_param("mesh") ? req.get_param_value("mesh") : "a");  // the mesh in use stays if the new one cannot be read
+    Painter next(options.threads, req.has_param("mesh") ? req.get_param_value("mesh") : "a", options.strict_input);  // the mesh in use stays if the new one cannot be read
     try {
       next.load(file.string(), name);
     } catch(const diffuv::Error& e) {
@@ -882,6 +887,7 @@ void add_serve_command(CLI::App& app)
   cmd->add_option("--threads", options->threads, "Threads that map the patches (0: all)")
       ->check(number_in(0, 1024))
       ->capture_default_str();
+  add_strict_input_option(cmd, options->strict_input);
   cmd->add_option("--max-request-mb", options->max_request_mb, "The largest request accepted, in MB (a mesh sent by the page)")
       ->check(number_in(1, 4096))
       ->capture_default_str();
