@@ -30,6 +30,7 @@
 from collections import defaultdict
 import html
 import json
+import os
 import re
 import struct
 import sys
@@ -64,23 +65,12 @@ def check_result(dom_file):
 
 
 def read_off_file(path):
-    """Points and faces of an OFF file (comments after '#' ignored)."""
-    tokens = []
-    with open(path) as f:
-        for line in f:
-            tokens.extend(line.split('#', 1)[0].split())
-    if not tokens or tokens[0] != 'OFF':
-        raise ValueError('%s: not an OFF file' % path)
-    nv, nf = int(tokens[1]), int(tokens[2])
-    i = 4
-    points = [tuple(map(float, tokens[i + 3 * k:i + 3 * k + 3])) for k in range(nv)]
-    i += 3 * nv
-    faces = []
-    for _ in range(nf):
-        n = int(tokens[i])
-        faces.append([int(t) for t in tokens[i + 1:i + 1 + n]])
-        i += 1 + n
-    return points, faces
+    """Points and faces of an OFF file: scripts/height_labels.py's reader."""
+    scripts = os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..', 'scripts')
+    if scripts not in sys.path:
+        sys.path.insert(0, scripts)
+    from height_labels import read_off
+    return read_off(path)
 
 
 def animal_labels(path, leg_height, head_x, head_y, flip=False):
