@@ -290,6 +290,17 @@ TEST(Render, IsolinesOnTheUnitSquare)
   // No isolines without isolines.
   const diffuv::Image none = diffuv::render_mesh(m, m.points(), uniform(red), xy_uv(m), front(0));
   EXPECT_EQ(count_in_row(none, 200, 130, 670, o.u_line_color), 0);
+  // Lines 270 pixels apart (the square is 540 wide, lines every 1/2): drawn
+  // with a minimum spacing of 200 pixels, left out with 300.
+  diffuv::Render_options spaced = o;
+  spaced.min_line_spacing = 200;
+  const diffuv::Image kept = diffuv::render_mesh(m, m.points(), uniform(red), xy_uv(m), spaced);
+  EXPECT_GE(count_in_row(kept, 200, 398, 402, o.u_line_color), 1);
+  spaced.min_line_spacing = 300;
+  const diffuv::Image dropped = diffuv::render_mesh(m, m.points(), uniform(red), xy_uv(m), spaced);
+  EXPECT_EQ(count_in_row(dropped, 200, 130, 670, o.u_line_color), 0);
+  EXPECT_EQ(count_in_row(dropped, 300, 130, 670, o.v_line_color), 0);
+  EXPECT_EQ(dropped.at(400, 200), red);
 }
 
 // With a texture, a face takes the texture's colour at its (u,v), filtered

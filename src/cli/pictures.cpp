@@ -62,7 +62,9 @@ diffuv::Image picture(const Input_mesh& in, const Parameterization& result, cons
         [&](Mesh::Face_index f) { return diffuv::patch_color(result.seg.face_patch[f.idx()]); },
         atlas.corner_uv_map(), look);
 
-  // Per-face distortion, chart by chart.
+  // Per-face distortion, chart by chart. The colour is the message: no
+  // isolines where they would be under 6 pixels apart (many small charts).
+  look.min_line_spacing = 6.;
   std::vector<double> value(num_faces(in.mesh), std::numeric_limits<double>::quiet_NaN());
   std::vector<bool> flipped(num_faces(in.mesh), false);
   double largest = 1.;

@@ -146,6 +146,10 @@ struct Render_options {
   double line_width = 1.0;            ///< isoline width in pixels (approximately)
   Color u_line_color{10, 40, 130};     ///< colour of the lines u = k / isolines (dark blue)
   Color v_line_color{130, 20, 20};     ///< colour of the lines v = k / isolines (dark red)
+  /// Isolines closer together than this on the screen (pixels) are not drawn
+  /// on that triangle: on a chart a few pixels wide they would paint it over
+  /// (0: always drawn). For pictures whose face colour is the message.
+  double min_line_spacing = 0.;
   double margin = 0.05;               ///< fraction of the width and height left empty on each side
   double ambient = 0.25;              ///< shade of a face seen edge-on; a face facing the camera gets its full colour
   /// If set, faces take this texture's colour (`sample_bilinear()`) at the
@@ -430,7 +434,10 @@ Image render_mesh(const TriangleMesh& tm, VertexPointMap vpm, FaceColor face_col
         } else if(has_uv) {
           const double du = internal::isoline_pixel_distance(w0 * u[0] + w1 * u[1] + w2 * u[2], N, grad_u);
           const double dv = internal::isoline_pixel_distance(w0 * v[0] + w1 * v[1] + w2 * v[2], N, grad_v);
-          if(du <= half_width || dv <= half_width) c = du <= dv ? options.u_line_color : options.v_line_color;
+          const bool u_lines = du <= half_width && !(options.min_line_spacing * N * grad_u > 1.);
+          const bool v_lines = dv <= half_width && !(options.min_line_spacing * N * grad_v > 1.);
+          if(u_lines && (!v_lines || du <= dv)) c = options.u_line_color;
+          else if(v_lines) c = options.v_line_color;
         }
         image.set(px, py, c);
       });
