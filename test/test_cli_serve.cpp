@@ -493,6 +493,17 @@ TEST_F(Serve, SecondMeshAndCorrespondenceAsDiffuvCorrespondGivesThem)
                       json_type),
           400, "numbers ≥ 0", "a negative weight");
   refused(client.Get("/api/correspond"), 405, "takes a POST", "GET on a POST route");
+  refused(client.Put("/api/layout", "{}", json_type), 405, "takes a POST", "PUT on a POST route");
+  refused(client.Delete("/api/mesh"), 405, "takes a GET", "DELETE on the mesh");
+  // Huge weights are the same point as equal ones (no overflow to infinity).
+  const json equal = post_json(client, "/api/correspond",
+                               {{"labels_a", bands}, {"labels_b", bands}, {"only_points", true},
+                                {"points", {{{"face", 100}, {"barycentric", {1e308, 1e308, 1e308}}},
+                                            {{"face", 100}, {"barycentric", {1, 1, 1}}}}}});
+  ASSERT_EQ(equal["points"].size(), 2u);
+  EXPECT_EQ(equal["points"][0]["face"], equal["points"][1]["face"]);
+  for(int d = 0; d < 3; ++d)
+    EXPECT_NEAR(equal["points"][0]["point"][d].get<double>(), equal["points"][1]["point"][d].get<double>(), 1e-12);
   refused(client.Get("/api/mesh?mesh=c"), 400, "takes a or b", "a third mesh");
   EXPECT_EQ(server.stop(SIGTERM, 10), 0);
 }
@@ -532,6 +543,12 @@ TEST_F(Serve, RefusesAPortInUseAndAMissingMesh)
   const Tool_run threads = run("serve --threads 99999");
   EXPECT_EQ(threads.code, 2);
   EXPECT_NE(threads.err.find("--threads"), std::string::npos) << threads.err;
+  // A label the page could not send back is refused at start.
+  std::string big_labels;
+  for(std::size_t f = 0; f < num_faces(diffuv_test::cgal_mesh("cow.off")); ++f) big_labels += f == 7 ? "5000000\n" : "1\n";
+  const Tool_run big = run("serve " + data_path("meshes/cow.off") + " --labels " + write("big.txt", big_labels) + " --port 0");
+  EXPECT_EQ(big.code, 1);
+  EXPECT_NE(big.err.find("label 5000000 (face 7): the painter takes labels from 0 to 1000000"), std::string::npos) << big.err;
   // A mesh that needs a repair: refused with --strict-input, naming the problem.
   const std::string twice = write("twice.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n3 0 1 2\n3 0 1 2\n");
   const Tool_run strict = run("serve " + twice + " --strict-input --port 0");

@@ -1368,7 +1368,8 @@ function showCorrespondenceReport() {
   const ms = Number(answer.milliseconds);
   const allMapped = report.mapped === report.vertices;
   $("corr-status").textContent = `${report.matched_patches} patches of A paired with B's` +
-    (Number.isFinite(ms) ? ` in ${ms.toFixed(0)} ms` : "") + (allMapped ? "; every vertex of A mapped" : "");
+    (answer.cached ? " (kept from the last request: same meshes and labels)"
+      : Number.isFinite(ms) ? ` in ${ms.toFixed(0)} ms` : "") + (allMapped ? "; every vertex of A mapped" : "");
   const problems = Array.isArray(answer.problems) ? answer.problems : [];
   $("corr-problem-count").textContent = problems.length ? `(${problems.length})` : "";
   for (const problem of problems) {

@@ -112,6 +112,13 @@ public:
     o.strict_input = strict_input_;
     Input_mesh in = read_input(path, o);
     if(num_faces(in.mesh) == 0) throw Bad_request{400, name + ": the mesh has no faces"};
+    // The page paints labels from 0 to 1,000,000 (and sends them back): a
+    // file's larger ones would be refused at the first stroke.
+    for(std::size_t f = 0; f < in.face_labels.size(); ++f)
+      if(in.face_labels[f] < 0 || in.face_labels[f] > 1000000)
+        throw diffuv::Input_error(in.labels_path.empty() ? path : in.labels_path, 0,
+                                  "label " + std::to_string(in.face_labels[f]) + " (face " + std::to_string(f) +
+                                      "): the painter takes labels from 0 to 1000000");
     in.path = name;
     mesh_ = std::make_unique<Input_mesh>(std::move(in));
     static std::atomic<std::uint64_t> loads{0};
@@ -254,7 +261,8 @@ public:
     note(r.cut, "cut", count_text(r.cut, "region") + " that " + (r.cut == 1 ? "was" : "were") + " not a disc cut into discs");
     note(r.caps_split, "cap_split", count_text(r.caps_split, "cap") + " split");
     note(r.flat_triangles_handed, "flat_triangles",
-         count_text(r.flat_triangles_handed, "face") + " flat on one side of its patch handed to a neighbour");
+         count_text(r.flat_triangles_handed, "face") + " flat on one side of " +
+             (r.flat_triangles_handed == 1 ? "its patch" : "their patches") + " handed to a neighbour");
     if(!repair_line(in).empty()) problems.push_back({{"kind", "read_repairs"}, {"patch", -1}, {"message", repair_line(in)}});
     if(r.voronoi_instead)
       problems.push_back({{"kind", "voronoi_instead"},
@@ -457,15 +465,17 @@ json correspond(const Painter& a, const Painter& b, const std::string& body, Cor
         throw Bad_request{400, which + ": face " + std::to_string(f) + " is not a face of mesh A (" +
                                    count_text(num_faces(ma), "face") + ")"};
       std::array<double, 3> w{};
-      double sum = 0.;
       for(int k = 0; k < 3; ++k) {
         const json& x = q["barycentric"][k];
         if(!x.is_number() || !std::isfinite(x.get<double>()) || x.get<double>() < 0.)
           throw Bad_request{400, which + ": its barycentric coordinates must be numbers ≥ 0"};
         w[k] = x.get<double>();
-        sum += w[k];
       }
-      if(!(sum > 0.)) throw Bad_request{400, which + ": its barycentric coordinates sum to 0"};
+      // Scaled by the largest first, so that huge weights do not overflow the sum.
+      const double largest = std::max({w[0], w[1], w[2]});
+      if(!(largest > 0.)) throw Bad_request{400, which + ": its barycentric coordinates sum to 0"};
+      for(double& x : w) x /= largest;
+      const double sum = w[0] + w[1] + w[2];
       for(double& x : w) x /= sum;
       points.emplace_back(Mesh::Face_index(static_cast<Mesh::size_type>(f)), cgal_from_api(w));
     }
@@ -537,7 +547,7 @@ json correspond(const Painter& a, const Painter& b, const std::string& body, Cor
       for(std::size_t p = 0; p < atlas->patches.size() && p < patch.size(); ++p)
         if(!atlas->patches[p].status)
           problems.push_back(std::string(atlas == atlas_a.get() ? "on A" : "on B") + ", patch " + patch[p] +
-                             " could not be mapped: " + atlas->patches[p].status.what());
+                             " could not be mapped: " + without_patch_prefix(atlas->patches[p].status.what(), p));
     }
     if(!match.unmatched_patches_a.empty())
       problems.push_back("patches of A without a counterpart on B: " + as_text(names(match.unmatched_patches_a)));
@@ -687,6 +697,10 @@ void run_server(const Serve_options& options)
     if(!res.body.empty()) return;
     if(res.status == 404) send_error(res, 404, "no such page: " + req.path);
     else if(res.status == 413) send_error(res, 413, "the request is larger than " + std::to_string(max_request_mb) + " MB");
+    else if(res.status == 414) send_error(res, 414, "the address is too long");
+    else if(res.status == 400)
+      send_error(res, 400, "the request could not be read (a body needs a Content-Length, and is dropped if it "
+                           "stalls for 10 s)");
     else send_error(res, res.status, "bad request");
   });
 
@@ -709,6 +723,8 @@ void run_server(const Serve_options& options)
   };
 
   const char* page_dir = std::getenv("DIFFUV_PAINTER_DIR");  // development: the page's files from disk
+  if(page_dir && !std::filesystem::exists(std::filesystem::path(page_dir) / "index.html"))
+    std::cerr << "diffuv: warning: DIFFUV_PAINTER_DIR=" << page_dir << " has no index.html: the page will be empty\n";
   auto page_file = [page_dir](const char* name, const char* built_in, const char* type) {
     return [=](const httplib::Request&, httplib::Response& res) {
       if(page_dir) {
@@ -785,11 +801,20 @@ void run_server(const Serve_options& options)
     res.set_content(as_text(correspond(painter_a, painter_b, req.body, correspondence_cache)), "application/json");
   }));
   // The routes that take a body answer other methods with 405, not "no such page".
-  for(const char* route : {"/api/layout", "/api/param", "/api/labels.txt", "/api/painted.ply", "/api/correspond"})
-    server.Get(route, [route](const httplib::Request&, httplib::Response& res) {
+  for(const char* route : {"/api/layout", "/api/param", "/api/labels.txt", "/api/painted.ply", "/api/correspond"}) {
+    const auto not_allowed = [route](const httplib::Request&, httplib::Response& res) {
       send_error(res, 405, std::string(route) + " takes a POST with a JSON body (doc/painter.md)");
       res.set_header("Allow", "POST");
-    });
+    };
+    server.Get(route, not_allowed).Put(route, not_allowed).Patch(route, not_allowed).Delete(route, not_allowed);
+    server.Options(route, not_allowed);
+  }
+  const auto mesh_not_allowed = [](const httplib::Request&, httplib::Response& res) {
+    send_error(res, 405, "/api/mesh takes a GET, or a POST with a mesh file (doc/painter.md)");
+    res.set_header("Allow", "GET, POST");
+  };
+  server.Put("/api/mesh", mesh_not_allowed).Patch("/api/mesh", mesh_not_allowed).Delete("/api/mesh", mesh_not_allowed);
+  server.Options("/api/mesh", mesh_not_allowed);
 
   int port = options.port;
   if(port == 0) {
@@ -867,8 +892,9 @@ void add_serve_command(CLI::App& app)
   auto options = std::make_shared<Serve_options>();
   CLI::App* cmd = app.add_subcommand(
       "serve", "Paint regions on a mesh in the browser and see the patches and the map (a local web server; "
-             "open the address it prints; ?view=patches, isolines or distortion opens that view; guide and HTTP API: "
-             "doc/painter.md)");
+             "open the address it prints; ?view=patches, isolines, distortion or correspond opens that view, "
+             "&pick=FACE picks A's face FACE in the correspondence view, &colors=gradient colours it by position on "
+             "B; guide and HTTP API: doc/painter.md)");
   cmd->add_option("mesh", options->mesh, "The mesh to open (OFF, OBJ, PLY, STL; painted colours or labels are read); "
                                          "default: none, open one in the page")
       ->check(CLI::ExistingFile);
