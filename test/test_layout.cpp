@@ -694,6 +694,28 @@ TEST(QuadLayout, EveryChartOfTheDefaultAtlasIsOneToOne)
   }
 }
 
+// The distortion of the atlas of `diffusion_patches()` on `m` (labels: `labels`),
+// bad patches of `min_split_patch_faces` faces refined; every patch must be
+// mapped and every chart one-to-one.
+diffuv::Distortion_summary refined_atlas_quality(const Mesh& m, const std::vector<int>& labels,
+                                                 std::size_t min_split_patch_faces)
+{
+  diffuv::Patching_options options;
+  options.quads.min_split_patch_faces = min_split_patch_faces;
+  Seg seg;
+  EXPECT_TRUE(diffuv::diffusion_patches(m, m.points(), labels, seg, options).ok());
+  diffuv::Uv_atlas<Mesh> atlas(m);
+  diffuv::Distortion_summary total;
+  for(const auto& r : diffuv::parameterize_patches(m, m.points(), seg, atlas)) {
+    EXPECT_TRUE(r.status.ok()) << r.status.what();
+    if(r.status)
+      total = diffuv::combined(total, diffuv::measure_distortion(m, m.points(), atlas.chart(r.chart).faces,
+                                                                 atlas.chart_texture_map(r.chart)));
+  }
+  EXPECT_TRUE(total.injective());
+  return total;
+}
+
 // The first stroke in the painter: a few faces on cow's back painted, the
 // rest one region. Its layout left each front leg as one quad of about 250
 // faces in a cell below `min_split_faces`, which the judge could not refine:
@@ -713,22 +735,7 @@ TEST(QuadLayout, LargePatchesInSmallCellsAreRefinedToo)
   for(auto f : faces(cow)) labels.push_back(CGAL::squared_distance(centroid(f), painted) < 0.03 * 0.03 ? 1 : 0);
   ASSERT_GE(std::count(labels.begin(), labels.end(), 1), 3);
   auto atlas_quality = [&](std::size_t min_split_patch_faces) {
-    diffuv::Patching_options options;
-    options.quads.min_split_patch_faces = min_split_patch_faces;
-    Seg seg;
-    EXPECT_TRUE(diffuv::disc_patches(cow, cow.points(), labels, seg, options, nullptr,
-                                     diffuv::Raw_map_judge<Mesh, decltype(cow.points())>(cow, cow.points()))
-                    .ok());
-    diffuv::Uv_atlas<Mesh> atlas(cow);
-    diffuv::Distortion_summary total;
-    for(const auto& r : diffuv::parameterize_patches(cow, cow.points(), seg, atlas)) {
-      EXPECT_TRUE(r.status.ok()) << r.status.what();
-      if(r.status)
-        total = diffuv::combined(total, diffuv::measure_distortion(cow, cow.points(), atlas.chart(r.chart).faces,
-                                                                   atlas.chart_texture_map(r.chart)));
-    }
-    EXPECT_TRUE(total.injective());
-    return total;
+    return refined_atlas_quality(cow, labels, min_split_patch_faces);
   };
   const diffuv::Distortion_summary refined = atlas_quality(diffuv::Quad_layout_options().min_split_patch_faces);
   EXPECT_LT(refined.stretch_l2, 2.5);
@@ -744,18 +751,7 @@ TEST(QuadLayout, SmallBadPatchesOfACoarseMeshAreRefinedToo)
 {
   const Mesh& m = cgal_mesh("triceratops.off");
   auto atlas_quality = [&](std::size_t min_split_patch_faces) {
-    diffuv::Patching_options options;
-    options.quads.min_split_patch_faces = min_split_patch_faces;
-    Seg seg;
-    EXPECT_TRUE(diffuv::diffusion_patches(m, m.points(), std::vector<int>(), seg, options).ok());
-    diffuv::Uv_atlas<Mesh> atlas(m);
-    diffuv::Distortion_summary total;
-    for(const auto& r : diffuv::parameterize_patches(m, m.points(), seg, atlas))
-      if(r.status)
-        total = diffuv::combined(total, diffuv::measure_distortion(m, m.points(), atlas.chart(r.chart).faces,
-                                                                   atlas.chart_texture_map(r.chart)));
-    EXPECT_TRUE(total.injective());
-    return total;
+    return refined_atlas_quality(m, std::vector<int>(), min_split_patch_faces);
   };
   const diffuv::Distortion_summary refined = atlas_quality(diffuv::Quad_layout_options().min_split_patch_faces);
   EXPECT_LT(refined.stretch_l2, 1.8);

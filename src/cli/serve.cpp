@@ -20,6 +20,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <cstdint>
 #include <cmath>
 #include <csignal>
@@ -88,6 +89,14 @@ json parsed_request(const std::string& body)
     throw Bad_request{400, std::string("the request is not JSON: ") + e.what()};
   }
   return request;
+}
+
+// A number as JSON; NaN and infinity (which JSON lacks) as null.
+json finite(double x) { return std::isfinite(x) ? json(x) : json(nullptr); }
+
+double milliseconds_since(std::chrono::steady_clock::time_point start)
+{
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
 // A library message about patch p may start with "patch p: "; the API gives the patch apart.
@@ -214,7 +223,7 @@ public:
     } catch(const diffuv::Error& e) {
       throw Bad_request{422, e.what()};
     }
-    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    const double ms = milliseconds_since(start);
     const Mesh& m = in.mesh;
     const auto& seg = result.seg;
     const std::size_t np = seg.number_of_patches();
@@ -324,7 +333,6 @@ public:
         stretch[faces[k].idx()] = measures[p].per_face[k].stretch_l2;
       }
     }
-    auto finite = [](double x) { return std::isfinite(x) ? json(x) : json(nullptr); };
     json area_json = json::array(), stretch_json = json::array();
     for(std::size_t f = 0; f < area.size(); ++f) {
       area_json.push_back(finite(area[f]));
@@ -482,7 +490,6 @@ json correspond(const Painter& a, const Painter& b, const std::string& body, Cor
   }
 
   const auto start = std::chrono::steady_clock::now();
-  auto finite = [](double x) { return std::isfinite(x) ? json(x) : json(nullptr); };
   const bool cached = cache.holds(a.generation(), b.generation(), labels_a, labels_b, transfer);
   if(!cached) {
     cache.clear();
@@ -524,8 +531,9 @@ json correspond(const Painter& a, const Painter& b, const std::string& body, Cor
       return result;
     };
     // Each chart's patch name (`correspond` prints them: label.part).
-    auto chart_names = [](const Labelled& atlas) {
-      const std::vector<std::string> names = diffuv::patch_names(atlas.segmentation);
+    const std::vector<std::string> names_a = diffuv::patch_names(atlas_a->segmentation),
+                                   names_b = diffuv::patch_names(atlas_b->segmentation);
+    auto chart_names = [](const Labelled& atlas, const std::vector<std::string>& names) {
       json result(std::vector<std::string>(atlas.atlas.number_of_charts()));
       for(std::size_t p = 0; p < atlas.patches.size() && p < names.size(); ++p)
         if(atlas.patches[p].status && atlas.patches[p].chart < result.size()) result[atlas.patches[p].chart] = names[p];
@@ -543,7 +551,7 @@ json correspond(const Painter& a, const Painter& b, const std::string& body, Cor
     };
     json problems = json::array();
     for(const Labelled* atlas : {atlas_a.get(), atlas_b.get()}) {
-      const std::vector<std::string> patch = diffuv::patch_names(atlas->segmentation);
+      const std::vector<std::string>& patch = atlas == atlas_a.get() ? names_a : names_b;
       for(std::size_t p = 0; p < atlas->patches.size() && p < patch.size(); ++p)
         if(!atlas->patches[p].status)
           problems.push_back(std::string(atlas == atlas_a.get() ? "on A" : "on B") + ", patch " + patch[p] +
@@ -565,8 +573,8 @@ json correspond(const Painter& a, const Painter& b, const std::string& body, Cor
                     {"face_chart_a", face_charts(*atlas_a)},
                     {"face_chart_b", face_charts(*atlas_b)},
                     {"chart_pair", std::move(chart_pair)},
-                    {"chart_name_a", chart_names(*atlas_a)},
-                    {"chart_name_b", chart_names(*atlas_b)},
+                    {"chart_name_a", chart_names(*atlas_a, names_a)},
+                    {"chart_name_b", chart_names(*atlas_b, names_b)},
                     {"labels_b", transfer && sent_b.empty() ? json(labels_b) : json(nullptr)},
                     {"report",
                      {{"matched_patches", match.matched_patches},
@@ -607,7 +615,7 @@ json correspond(const Painter& a, const Painter& b, const std::string& body, Cor
   json out = only_points ? json::object() : cache.answer;
   out["points"] = std::move(asked);
   out["cached"] = cached;
-  out["milliseconds"] = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  out["milliseconds"] = milliseconds_since(start);
   return out;
 }
 
