@@ -74,7 +74,9 @@ std::vector<double> distance_to_cell_centres(const TriangleMesh& tm, VertexPoint
   }
   auto dindex = get(boost::vertex_index, dual);
   if(border.empty()) return distance;
-  multi_source_dijkstra(dual, border, get(boost::edge_weight, dual), boost::make_iterator_property_map(depth.begin(), dindex));
+  // Distances only (no nearest source), the same bit for bit with any heap:
+  // the 4-ary one is the fastest (doc/performance.md).
+  multi_source_dijkstra<Quaternary_heap_tag>(dual, border, get(boost::edge_weight, dual), boost::make_iterator_property_map(depth.begin(), dindex));
   // The deepest face of each cell (on a tie, the one whose centroid comes
   // first in lexicographic order: a rule of the surface, not of the numbering).
   std::vector<std::size_t> deepest;
@@ -88,7 +90,7 @@ std::vector<double> distance_to_cell_centres(const TriangleMesh& tm, VertexPoint
     deepest.push_back(get(findex, best));
   }
   std::vector<double> found(nf, std::numeric_limits<double>::infinity());
-  multi_source_dijkstra(dual, deepest, get(boost::edge_weight, dual), boost::make_iterator_property_map(found.begin(), dindex));
+  multi_source_dijkstra<Quaternary_heap_tag>(dual, deepest, get(boost::edge_weight, dual), boost::make_iterator_property_map(found.begin(), dindex));
   for(std::size_t p = 0; p < nc; ++p) {
     if(!to_compute[p]) continue;
     for(auto f : cells.patch_faces[p]) distance[get(findex, f)] = found[get(findex, f)];

@@ -23,7 +23,6 @@
 #include <cstddef>
 #include <functional>
 #include <limits>
-#include <map>
 #include <queue>
 #include <utility>
 #include <vector>
@@ -180,7 +179,15 @@ bool flatten_region(const Local_region<TriangleMesh>& r, std::vector<double>& X,
   std::vector<std::array<int, 3>> ordered = r.face_verts;
   for(auto& fv : ordered) std::sort(fv.begin(), fv.end());  // a face's weights do not depend on its orientation
   std::sort(ordered.begin(), ordered.end());
-  std::vector<std::map<int, double>> weight(nv);
+  // Each vertex's weights by neighbour, kept sorted: a flat list is cheaper
+  // than a map and sums in the same order.
+  std::vector<std::vector<std::pair<int, double>>> weight(nv);
+  auto add_weight = [&](int i, int j, double w) {
+    auto& wi = weight[i];
+    auto it = std::lower_bound(wi.begin(), wi.end(), j, [](const std::pair<int, double>& e, int key) { return e.first < key; });
+    if(it == wi.end() || it->first != j) it = wi.insert(it, {j, 0.});
+    it->second += w;
+  };
   for(const auto& fv : ordered)
     for(int e = 0; e < 3; ++e) {
       const int i = fv[e], a = fv[(e + 1) % 3], b = fv[(e + 2) % 3];
@@ -195,8 +202,8 @@ bool flatten_region(const Local_region<TriangleMesh>& r, std::vector<double>& X,
       const double denominator = lu * lv + (ux * vx + uy * vy + uz * vz);
       if(!(lu > 0 && lv > 0 && denominator > 0)) continue;
       const double half_tan = std::sqrt(cx * cx + cy * cy + cz * cz) / denominator;
-      weight[i][a] += half_tan / lu;
-      weight[i][b] += half_tan / lv;
+      add_weight(i, a, half_tan / lu);
+      add_weight(i, b, half_tan / lv);
     }
   std::vector<Eigen::Triplet<double>> triplets;
   Eigen::VectorXd bx = Eigen::VectorXd::Zero(nu), by = Eigen::VectorXd::Zero(nu);
