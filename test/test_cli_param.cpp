@@ -69,11 +69,26 @@ TEST_F(Tool, TheObjChartsArePackedIntoOneTexture)
 {
   const Tool_run r = run("param " + data_path("meshes/cow.off") + " --texture-size 512 --gutter 3 -o " + out_dir().string());
   ASSERT_EQ(r.code, 0) << r.err;
-  const std::size_t at = r.out.find(" charts packed into 512 x 512 texels (gutter 3): ");
-  ASSERT_NE(at, std::string::npos) << r.out;
-  const double covered = std::stod(r.out.substr(at + std::string(" charts packed into 512 x 512 texels (gutter 3): ").size()));
-  EXPECT_GT(covered, 50.);
+  const auto covered_share = [](const std::string& out, const std::string& packer) {
+    const std::string said = " charts packed into 512 x 512 texels (gutter 3, " + packer + "): ";
+    const std::size_t at = out.find(said);
+    return at == std::string::npos ? -1. : std::stod(out.substr(at + said.size()));
+  };
+  const double covered = covered_share(r.out, "shelves");
+  EXPECT_GT(covered, 50.) << r.out;
   EXPECT_LT(covered, 100.);
+  // stb's skyline, kept for comparison, leaves more of the texture empty;
+  // an unknown packer is refused.
+  const Tool_run skyline = run("param " + data_path("meshes/cow.off") +
+                               " --texture-size 512 --gutter 3 --packer skyline --outputs obj -o " +
+                               (out_dir() / "skyline").string());
+  ASSERT_EQ(skyline.code, 0) << skyline.err;
+  EXPECT_GT(covered_share(skyline.out, "skyline"), 50.) << skyline.out;
+  EXPECT_LT(covered_share(skyline.out, "skyline"), covered);
+  const Tool_run unknown = run("param " + data_path("meshes/cow.off") + " --packer best -o " +
+                               (out_dir() / "unknown").string());
+  EXPECT_EQ(unknown.code, 2);
+  EXPECT_NE(unknown.err.find("--packer"), std::string::npos) << unknown.err;
   const diffuv::Obj_charts obj = diffuv::read_obj_charts((out_dir() / "cow.obj").string());
   ASSERT_GT(obj.number_of_charts, 10u);
   std::vector<std::array<double, 4>> box(obj.number_of_charts, {1e9, 1e9, -1e9, -1e9}); // texels

@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <limits>
 #include <set>
 #include <vector>
 
@@ -120,10 +121,19 @@ TEST(PackCharts, CowChartsShareOneTextureWithoutOverlap)
         ASSERT_LE(t.y() * r, p.y + p.height - g + 1e-9) << "chart " << c;
       }
     }
-    // One density: the chart's rectangle in texels has the patch's area times density squared.
-    EXPECT_NEAR(p.extent_u * p.extent_v, chart_area * packing.texels_per_unit * packing.texels_per_unit,
-                1e-6 * p.extent_u * p.extent_v)
+    // One density within the shelves' tolerance: the chart's rectangle in
+    // texels has the patch's area times a density within 4.5 % of the atlas's.
+    const double density = std::sqrt(p.extent_u * p.extent_v / chart_area);
+    EXPECT_NEAR(density, packing.texels_per_unit, options.density_tolerance * packing.texels_per_unit + 1e-9)
         << "chart " << c;
+    // Its aspect within 10 % of the patch's, turned or not.
+    const auto& size = atlas.chart(c).size;
+    const double aspect_change = (p.extent_u / p.extent_v) / (size[0] / size[1]);
+    EXPECT_LE(aspect_change, 1. + options.aspect_tolerance + 1e-9) << "chart " << c;
+    EXPECT_GE(aspect_change, 1. / (1. + options.aspect_tolerance) - 1e-9) << "chart " << c;
+    // Drawn in its slot, which is whole texels: only the gutters are left.
+    EXPECT_LE(p.extent_u + 2 * g, (p.rotated ? p.height : p.width) + 1e-9);
+    EXPECT_LE(p.extent_v + 2 * g, (p.rotated ? p.width : p.height) + 1e-9);
   }
   // One way of turning for all charts: none, the tall ones or the wide ones.
   std::set<int> turned_kinds;
@@ -143,15 +153,17 @@ TEST(PackCharts, CowChartsShareOneTextureWithoutOverlap)
   EXPECT_GT(packing.coverage, 0.5);
 }
 
-// Packed coordinates keep each triangle's orientation (a turned chart is
-// turned, not mirrored) and its shape up to one scale: the same L2 stretch
-// as on the chart's rectangle.
+// The skyline packer's coordinates keep each triangle's orientation (a
+// turned chart is turned, not mirrored) and its shape up to one scale: the
+// same L2 stretch as on the chart's rectangle, one density everywhere.
 TEST(PackCharts, TurningKeepsOrientationAndShape)
 {
   const Mesh& cow = cgal_mesh("cow.off");
   const Mapped mapped = map_default(cow);
   const Atlas& atlas = *mapped.atlas;
-  const diffuv::Chart_packing packing = diffuv::pack_charts(atlas, cow.points());
+  diffuv::Chart_packing_options skyline;
+  skyline.packer = diffuv::Chart_packer::skyline;
+  const diffuv::Chart_packing packing = diffuv::pack_charts(atlas, cow.points(), skyline);
   const auto packed = diffuv::packed_corner_map(atlas, packing);
   const auto rectangle = atlas.corner_texture_map();
   std::size_t turned = 0;
@@ -179,25 +191,115 @@ TEST(PackCharts, TurningKeepsOrientationAndShape)
     }
   }
   (void)turned;
+  // One density: the chart's rectangle in texels has the patch's area times density squared.
+  for(std::size_t c = 0; c < atlas.number_of_charts(); ++c) {
+    double chart_area = 0.;
+    for(auto f : atlas.chart(c).faces) chart_area += CGAL::Polygon_mesh_processing::face_area(f, cow);
+    const auto& p = packing.charts[c];
+    EXPECT_NEAR(p.extent_u * p.extent_v, chart_area * packing.texels_per_unit * packing.texels_per_unit,
+                1e-6 * p.extent_u * p.extent_v)
+        << "chart " << c;
+  }
+}
+
+// The shelves never mirror a chart and map it affinely: every packed
+// triangle keeps its orientation, and its area over its area on the unit
+// square is one number per chart (the drawn rectangle's, in texels).
+TEST(PackCharts, ShelvesKeepOrientationAndOneScalePerChart)
+{
+  const Mesh& cow = cgal_mesh("cow.off");
+  const Mapped mapped = map_default(cow);
+  const Atlas& atlas = *mapped.atlas;
+  const diffuv::Chart_packing packing = diffuv::pack_charts(atlas, cow.points());
+  const auto packed = diffuv::packed_corner_map(atlas, packing);
+  const auto square = atlas.corner_uv_map();
+  const double r = packing.resolution;
+  std::size_t turned = 0;
+  for(std::size_t c = 0; c < atlas.number_of_charts(); ++c) {
+    const auto& p = packing.charts[c];
+    turned += p.rotated;
+    for(auto f : atlas.chart(c).faces) {
+      std::array<Point_2, 3> a, b;
+      std::size_t k = 0;
+      for(auto h : CGAL::halfedges_around_face(cow.halfedge(f), cow)) {
+        a[k] = get(square, h);
+        b[k++] = get(packed, h);
+      }
+      const double area_a = CGAL::area(a[0], a[1], a[2]);
+      const double area_b = CGAL::area(b[0], b[1], b[2]) * r * r;
+      if(std::abs(area_a) < 1e-12) continue;
+      EXPECT_GT(area_a * area_b, 0.) << "chart " << c << ": a triangle mirrored";
+      EXPECT_NEAR(area_b / area_a, p.extent_u * p.extent_v, 1e-6 * p.extent_u * p.extent_v) << "chart " << c;
+    }
+  }
+  EXPECT_GT(turned, 0u) << "cow's charts all lying one way is unlikely: is turning tried?";
+}
+
+// The shelves cover more of the texture than the skyline on the same charts
+// (their point: rows closed at the edge, charts filling whole texels), with
+// every chart's density within 10 % of every other's and no texel sampled
+// by two charts.
+TEST(PackCharts, ShelvesCoverMoreThanTheSkyline)
+{
+  for(const char* name : {"cow.off", "man.off"}) {
+    const Mesh& m = cgal_mesh(name);
+    const Mapped mapped = map_default(m);
+    diffuv::Chart_packing_options skyline;
+    skyline.packer = diffuv::Chart_packer::skyline;
+    const auto shelves = diffuv::pack_charts(*mapped.atlas, m.points());
+    const auto stb = diffuv::pack_charts(*mapped.atlas, m.points(), skyline);
+    EXPECT_GT(shelves.coverage, stb.coverage + 0.02) << name;
+    const std::vector<int> count = charts_per_texel(*mapped.atlas, shelves);
+    EXPECT_EQ(*std::max_element(count.begin(), count.end()), 1) << name;
+    const double covered = double(std::count(count.begin(), count.end(), 1)) / double(count.size());
+    EXPECT_NEAR(covered, shelves.coverage, 0.03) << name;
+    double lowest = 1e300, highest = 0.;
+    for(std::size_t c = 0; c < mapped.atlas->number_of_charts(); ++c) {
+      double area = 0.;
+      for(auto f : mapped.atlas->chart(c).faces) area += CGAL::Polygon_mesh_processing::face_area(f, m);
+      const auto& p = shelves.charts[c];
+      if(p.width == 0) continue;
+      const double density = std::sqrt(p.extent_u * p.extent_v / area);
+      lowest = std::min(lowest, density);
+      highest = std::max(highest, density);
+    }
+    EXPECT_LE(highest / lowest, 1.1) << name;
+  }
+}
+
+// Tolerances out of range are refused with a message.
+TEST(PackCharts, ShelvesRefuseBadTolerances)
+{
+  const Mesh& cow = cgal_mesh("cow.off");
+  const Mapped mapped = map_default(cow);
+  for(double bad : {-0.1, 1., std::numeric_limits<double>::quiet_NaN()}) {
+    diffuv::Chart_packing_options o;
+    o.density_tolerance = bad;
+    EXPECT_THROW(diffuv::pack_charts(*mapped.atlas, cow.points(), o), std::invalid_argument) << bad;
+    o = diffuv::Chart_packing_options();
+    o.aspect_tolerance = bad < 1. ? bad : std::numeric_limits<double>::infinity();
+    EXPECT_THROW(diffuv::pack_charts(*mapped.atlas, cow.points(), o), std::invalid_argument) << bad;
+  }
 }
 
 // Turning where it packs better never packs worse than not turning, and is
 // still a packing without overlap.
 TEST(PackCharts, TurningWhereItPacksBetter)
 {
-  for(const char* name : {"cow.off", "man.off"}) {
-    const Mesh& m = cgal_mesh(name);
-    const Mapped mapped = map_default(m);
-    diffuv::Chart_packing_options fixed;
-    fixed.rotate = false;
-    const auto chosen = diffuv::pack_charts(*mapped.atlas, m.points());
-    const auto unturned = diffuv::pack_charts(*mapped.atlas, m.points(), fixed);
-    EXPECT_GE(chosen.texels_per_unit, unturned.texels_per_unit) << name;
-    EXPECT_GE(chosen.coverage, unturned.coverage) << name;
-    for(const auto& p : unturned.charts) EXPECT_FALSE(p.rotated);
-    const std::vector<int> count = charts_per_texel(*mapped.atlas, chosen);
-    EXPECT_EQ(*std::max_element(count.begin(), count.end()), 1) << name;
-  }
+  for(const char* name : {"cow.off", "man.off"})
+    for(const auto packer : {diffuv::Chart_packer::shelves, diffuv::Chart_packer::skyline}) {
+      const Mesh& m = cgal_mesh(name);
+      const Mapped mapped = map_default(m);
+      diffuv::Chart_packing_options turning, fixed;
+      turning.packer = fixed.packer = packer;
+      fixed.rotate = false;
+      const auto chosen = diffuv::pack_charts(*mapped.atlas, m.points(), turning);
+      const auto unturned = diffuv::pack_charts(*mapped.atlas, m.points(), fixed);
+      EXPECT_GE(chosen.coverage, unturned.coverage) << name;
+      for(const auto& p : unturned.charts) EXPECT_FALSE(p.rotated);
+      const std::vector<int> count = charts_per_texel(*mapped.atlas, chosen);
+      EXPECT_EQ(*std::max_element(count.begin(), count.end()), 1) << name;
+    }
 }
 
 // A larger texture gives a larger density, the same gutters a larger share;

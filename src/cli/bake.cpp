@@ -4,6 +4,7 @@
 // or the same from another mesh of the object (closest point).
 #include "commands.h"
 #include "pictures.h"
+#include "packing.h"
 #include "pipeline.h"
 
 #include <diffuv/correspondence/nearest_face_labels.h>
@@ -221,7 +222,7 @@ void run_bake(Bake_cli_options& o)
   const Atlas& atlas = *result.atlas;
   diffuv::Chart_packing packing;
   try {
-    packing = diffuv::pack_charts(atlas, in.mesh.points(), diffuv::Chart_packing_options{options.texture_size, options.gutter});
+    packing = diffuv::pack_charts(atlas, in.mesh.points(), packing_options(options));
   } catch(const std::invalid_argument&) {
     throw CLI::ValidationError("--resolution", "the " + count_text(atlas.number_of_charts(), "chart") +
                                                    " do not fit in " + std::to_string(options.texture_size) + " x " +
@@ -280,10 +281,11 @@ void run_bake(Bake_cli_options& o)
             << (in.face_labels.empty() ? std::string() : " (" + in.label_source + ")") << "\n";
   char line[300];
   std::snprintf(line, sizeof line,
-                "atlas: %zu charts packed into %d x %d texels (gutter %d): %.1f %% of the texels covered, %.4g texels per "
-                "unit of length",
+                "atlas: %zu charts packed into %d x %d texels (gutter %d, %s): %.1f %% of the texels covered, %.4g "
+                "texels per unit of length%s",
                 atlas.number_of_charts(), options.texture_size, options.texture_size, options.gutter,
-                100. * packing.coverage, packing.texels_per_unit);
+                options.packer.c_str(), 100. * packing.coverage, packing.texels_per_unit,
+                options.packer == "shelves" ? " (each chart's within 4.5 %)" : "");
   std::cout << line << "\n";
   std::cout << "baked " << o.what << " (" << data.note << (from ? ", from the closest points of " + o.from : std::string())
             << "): " << baked.face_texels << " texels from the faces, " << baked.vertex_texels
@@ -332,6 +334,7 @@ void add_bake_command(CLI::App& app)
   cmd->add_option("--gutter", p.gutter, "Texels kept free on each side of a packed chart")
       ->check(number_in(0, 256))
       ->capture_default_str();
+  add_packer_option(cmd, p);
   cmd->add_option("--dilation", options->dilation,
                   "Texels around the charts filled with the colour of their neighbours, so that filtering and "
                   "mipmaps do not bleed the black background into the charts' borders")

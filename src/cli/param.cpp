@@ -4,6 +4,7 @@
 // report.cpp.
 #include "commands.h"
 #include "pictures.h"
+#include "packing.h"
 #include "pipeline.h"
 #include "report.h"
 
@@ -134,7 +135,7 @@ void run_param(const Param_options& options)
   std::string atlas_line;
   if(packed) {
     try {
-      packing = diffuv::pack_charts(atlas, in.mesh.points(), diffuv::Chart_packing_options{options.texture_size, options.gutter});
+      packing = diffuv::pack_charts(atlas, in.mesh.points(), packing_options(options));
     } catch(const std::invalid_argument&) {
       throw CLI::ValidationError("--texture-size", "the " + count_text(atlas.number_of_charts(), "chart") +
                                                        " do not fit in " + std::to_string(options.texture_size) +
@@ -144,11 +145,13 @@ void run_param(const Param_options& options)
     }
     char line[200];
     std::snprintf(line, sizeof line,
-                  "atlas: %zu charts packed into %d x %d texels (gutter %d): %.1f %% of the texels covered, %.4g texels "
-                  "per unit of length",
+                  "atlas: %zu charts packed into %d x %d texels (gutter %d, %s): %.1f %% of the texels covered, %.4g "
+                  "texels per unit of length%s",
                   atlas.number_of_charts(), options.texture_size, options.texture_size, options.gutter,
-                  100. * packing.coverage, packing.texels_per_unit);
+                  options.packer.c_str(), 100. * packing.coverage, packing.texels_per_unit,
+                  options.packer == "shelves" ? " (each chart's within 4.5 %)" : "");
     atlas_line = line;
+    stages.done("pack");
   }
   diffuv::Output_folder out(options.output, inputs);
   // The texture of the OBJ and the glTF file. Packed: squares of 16 texels
@@ -315,7 +318,8 @@ void add_param_command(CLI::App& app)
                   "Texels kept free on each side of a packed chart, so that filtering does not mix two charts")
       ->check(number_in(0, 256))
       ->capture_default_str();
-  for(CLI::Option* packing : {texture_size, gutter}) {
+  CLI::Option* packer = add_packer_option(cmd, *options);
+  for(CLI::Option* packing : {texture_size, gutter, packer}) {
     packing->excludes(stacked);
     packing->excludes(unit_squares);
   }

@@ -43,6 +43,7 @@ struct Param_options {
   bool stacked = false;      // each chart at the texture's origin, not packed into one texture
   int texture_size = 1024;   // the packed texture's width and height, in texels
   int gutter = 2;            // texels kept free around each packed chart
+  std::string packer = "shelves"; // --packer: shelves (rows filled to the edge) or skyline (stb's, one density)
   std::string color = "patches";
   bool render_only = false; // diffuv render: the picture only
   std::size_t threads = 0;   // 0: every core (with oneTBB)

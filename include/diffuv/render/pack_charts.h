@@ -9,16 +9,23 @@
 //   rectangle of the patch's aspect, scaled so that its area is the patch's
 //     3D area (one texel density on every chart)
 //   -> turned by 90 degrees so that all lie wide, or all stand tall, or
-//      none turned: whichever packs densest (stb's skyline fills its rows
-//      differently with each)
+//      none turned: whichever packs densest
 //   -> a gutter of texels around it (bilinear filtering and mipmaps must not
 //      mix two charts' texels)
-//   -> the largest density at which every chart fits, by bisection over
-//      stb_rect_pack's skyline packer (Debian's libstb-dev).
+//   -> the largest density at which every chart fits, with one of two
+//      packers:
+//      - shelves (the default): rows of charts of one height, tallest first,
+//        each row filled to the texture's edge by letting every chart's
+//        density and aspect give a little (within 4.5 % and 10 %); the
+//        charts then fill whole texels, so only the gutters are lost;
+//      - skyline: stb_rect_pack's packer (Debian's libstb-dev), every chart
+//        at exactly one density and its own aspect, in a slot rounded up to
+//        whole texels (the chart is not stretched to the rounded size).
 //
-// A chart drawn at density s covers (s w) x (s h) texels of its slot, the
-// slot being that rounded up plus the gutters: the chart is not stretched to
-// the rounded size, so the density stays exactly s everywhere.
+// stb's packer places fixed rectangles; the shelves use the freedom the
+// issue allows (density within 10 %), which a fixed-size packer cannot:
+// with ~300 charts the skyline leaves about 10 % of the texture between
+// slots, the shelves 1-3 % (doc/design.md, "Packed atlas").
 #ifndef DIFFUV_RENDER_PACK_CHARTS_H
 #define DIFFUV_RENDER_PACK_CHARTS_H
 
@@ -54,6 +61,18 @@
 
 namespace diffuv {
 
+/// How `pack_charts()` places the charts' slots.
+enum class Chart_packer {
+  /// Rows ("shelves") of charts of one height, each row filled to the
+  /// texture's width: a chart's texel density may differ from the atlas's by
+  /// `density_tolerance` and its rectangle's aspect from its patch's by
+  /// `aspect_tolerance`, so that rows close without gaps.
+  shelves,
+  /// stb_rect_pack's skyline packer: every chart at exactly one density and
+  /// its patch's aspect, in slots rounded up to whole texels.
+  skyline
+};
+
 /// Options of `pack_charts()`.
 struct Chart_packing_options {
   int resolution = 1024; ///< the texture's width and height in texels
@@ -61,6 +80,15 @@ struct Chart_packing_options {
   /// Try the charts turned by 90 degrees to lie all wide and all tall as
   /// well as unturned, and keep whichever packs densest.
   bool rotate = true;
+  Chart_packer packer = Chart_packer::shelves;
+  /// Shelves: a chart's density lies within this share of the atlas's
+  /// (0.045: any two charts' densities within 10 % of each other).
+  double density_tolerance = 0.045;
+  /// Shelves: a chart's rectangle may be up to this share wider or
+  /// narrower, for its height, than its patch's aspect (the aspect was
+  /// chosen for least stretch: 10 % costs cow, man, bull, bunny00 and
+  /// camel 0.1 % of their L2 and 0.2-0.7 % of their angle distortion).
+  double aspect_tolerance = 0.10;
 };
 
 /// One chart's place in the texture. Texels are counted from the lower left
@@ -69,15 +97,18 @@ struct Packed_chart {
   int x = 0, y = 0;          ///< lower left texel of the chart's slot (gutters included)
   int width = 0, height = 0; ///< the slot, in texels, gutters included (0 for a chart of no area)
   bool rotated = false;      ///< drawn turned by 90 degrees counter-clockwise
-  double extent_u = 0.;      ///< texels the chart spans along u (before turning)
-  double extent_v = 0.;      ///< texels the chart spans along v
+  double extent_u = 0.;      ///< texels the chart is drawn across along u (before turning)
+  double extent_v = 0.;      ///< texels the chart is drawn across along v
 };
 
 /// Where `pack_charts()` put the charts.
 struct Chart_packing {
   int resolution = 0;
   int gutter = 0;
-  double texels_per_unit = 0.;      ///< texels per unit of length on the surface, the same on every chart
+  /// Texels per unit of length on the surface: every chart's with the
+  /// skyline packer; with shelves, each chart's lies within
+  /// `density_tolerance` of it (sqrt(extent_u extent_v / its 3D area)).
+  double texels_per_unit = 0.;
   std::vector<Packed_chart> charts; ///< one per chart of the atlas, in its order
   /// Texels inside the charts' rectangles over all texels: the share of
   /// the texture the charts cover, as a map onto its whole rectangle (the
@@ -120,6 +151,156 @@ inline bool pack_rectangles(int resolution, const std::vector<std::array<int, 2>
   return true;
 }
 
+/// A chart's place in a shelf packing: its slot (gutters included) and the
+/// size it is drawn at inside it, in texels.
+struct Shelf_slot {
+  int x = 0, y = 0, width = 0, height = 0;
+  double drawn_width = 0., drawn_height = 0.;
+};
+
+/// Packs charts of `sizes` (width, height in texels at the atlas's density,
+/// as they will lie) into rows, bottom up, each as wide as the texture: the
+/// tallest charts first; a row's height is the least its first chart may be
+/// drawn at, and every later chart of the row is drawn at that height (its
+/// density within `density_tolerance` and its aspect within
+/// `aspect_tolerance`) or, if it cannot reach it, at the most its density
+/// allows, at the row's foot. A row takes charts while they fit at their
+/// least widths; then the widths are grown or shrunk within the same
+/// tolerances so that the row ends at the texture's edge, and rounded to
+/// whole texels. False if the rows do not fit.
+inline bool pack_shelves(int resolution, int gutter, double density_tolerance, double aspect_tolerance,
+                         const std::vector<std::array<double, 2>>& sizes, std::vector<Shelf_slot>& slots)
+{
+  const std::size_t n = sizes.size();
+  std::vector<std::size_t> order(n);
+  for(std::size_t k = 0; k < n; ++k) order[k] = k;
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    if(sizes[a][1] != sizes[b][1]) return sizes[a][1] > sizes[b][1];
+    return sizes[a][0] > sizes[b][0];
+  });
+  slots.assign(n, Shelf_slot());
+  const double R = resolution, g2 = 2. * gutter;
+  const double low_density = 1. - density_tolerance, high_density = 1. + density_tolerance;
+  const double wider = 1. + aspect_tolerance;
+  // A chart of (w, h) drawn at height H: the widths its tolerances allow.
+  const auto widths = [&](double w, double h, double H) {
+    const double area = w * h, aspect = w / h;
+    return std::array<double, 2>{(std::max)(low_density * low_density * area / H, H * aspect / wider),
+                                 (std::min)(high_density * high_density * area / H, H * aspect * wider)};
+  };
+  const double shortest = low_density / std::sqrt(wider), tallest = high_density * std::sqrt(wider);
+  int y = 0;
+  std::size_t next = 0;
+  std::vector<std::size_t> row;
+  std::vector<double> least, most, width, drawn_height;
+  while(next < n) {
+    const double w0 = sizes[order[next]][0], h0 = sizes[order[next]][1];
+    // The row's height: the least its first chart may be drawn at; a chart
+    // too small for a whole texel within its tolerances is drawn at its own
+    // size in a slot rounded up, as the skyline packer draws every chart.
+    int H = (std::max)(1, static_cast<int>(std::ceil(shortest * h0 - 1e-9)));
+    const bool first_fits = H <= tallest * h0 + 1e-9;
+    if(!first_fits) H = (std::max)(1, static_cast<int>(std::ceil(h0 - 1e-9)));
+    row.clear();
+    least.clear();
+    most.clear();
+    width.clear();
+    drawn_height.clear();
+    double sum_least = 0.;
+    for(std::size_t j = next; j < n; ++j) {
+      const double w = sizes[order[j]][0], h = sizes[order[j]][1];
+      std::array<double, 2> range;
+      double preferred, tall = sizes[order[j]][1];
+      if(j == next && !first_fits) {
+        range = {std::ceil(w - 1e-9), std::ceil(w - 1e-9)};
+        preferred = range[0];
+      } else {
+        if(H < shortest * h - 1e-9) break; // cannot be drawn this low
+        // A chart that cannot reach the row's height is drawn at the height
+        // its density allows, at the row's foot (next-fit by decreasing
+        // height: the row is still filled to the edge).
+        tall = H > tallest * h + 1e-9 ? high_density * h : static_cast<double>(H);
+        range = widths(w, h, tall);
+        range[0] = (std::max)(range[0], 1.);
+        range[1] = (std::max)(range[1], range[0]);
+        preferred = (std::min)((std::max)(tall * w / h, range[0]), range[1]); // its own aspect where it can
+      }
+      // The row holds it if every chart fits at its least whole width.
+      const double fewest_texels = std::ceil(range[0] - 1e-9);
+      if(sum_least + fewest_texels + g2 * static_cast<double>(row.size() + 1) > R) break;
+      row.push_back(order[j]);
+      least.push_back(range[0]);
+      most.push_back(range[1]);
+      width.push_back(preferred);
+      drawn_height.push_back(tall);
+      sum_least += fewest_texels;
+    }
+    if(row.empty()) return false; // the first chart is wider than the texture
+    // Widths within their tolerances that end the row at the texture's edge
+    // (or as near as the tolerances let them).
+    const double room = R - g2 * static_cast<double>(row.size());
+    double sum = 0., slack = 0.;
+    for(double w : width) sum += w;
+    if(sum < room) {
+      for(std::size_t k = 0; k < row.size(); ++k) slack += most[k] - width[k];
+      const double t = slack > 0. ? (std::min)(1., (room - sum) / slack) : 0.;
+      for(std::size_t k = 0; k < row.size(); ++k) width[k] += t * (most[k] - width[k]);
+    } else if(sum > room) {
+      for(std::size_t k = 0; k < row.size(); ++k) slack += width[k] - least[k];
+      const double t = slack > 0. ? (std::min)(1., (sum - room) / slack) : 0.;
+      for(std::size_t k = 0; k < row.size(); ++k) width[k] -= t * (width[k] - least[k]);
+    }
+    // Whole texels: each width rounded down (not below its tolerance),
+    // then texels taken from or handed to the widths by their remainders,
+    // each within its tolerance, so that the row ends at the edge.
+    sum = 0.;
+    std::vector<int> whole(row.size()), fewest(row.size());
+    int whole_sum = 0;
+    for(std::size_t k = 0; k < row.size(); ++k) {
+      sum += width[k];
+      fewest[k] = static_cast<int>(std::ceil(least[k] - 1e-9));
+      whole[k] = (std::max)(fewest[k], static_cast<int>(std::floor(width[k] + 1e-9)));
+      whole_sum += whole[k];
+    }
+    const int room_whole = resolution - 2 * gutter * static_cast<int>(row.size());
+    const int wanted = (std::min)(room_whole, static_cast<int>(std::floor(sum + 0.5)));
+    std::vector<std::size_t> by_remainder(row.size());
+    for(std::size_t k = 0; k < row.size(); ++k) by_remainder[k] = k;
+    std::stable_sort(by_remainder.begin(), by_remainder.end(), [&](std::size_t a, std::size_t b) {
+      return width[a] - whole[a] > width[b] - whole[b];
+    });
+    for(std::size_t k = 0; whole_sum < wanted && k < by_remainder.size(); ++k)
+      if(whole[by_remainder[k]] + 1 <= most[by_remainder[k]] + 1e-9) {
+        ++whole[by_remainder[k]];
+        ++whole_sum;
+      }
+    for(std::size_t k = by_remainder.size(); whole_sum > room_whole && k-- > 0;)
+      if(whole[by_remainder[k]] > fewest[by_remainder[k]]) {
+        --whole[by_remainder[k]];
+        --whole_sum;
+      }
+    if(y + H + 2 * gutter > resolution) return false;
+    int x = 0;
+    for(std::size_t k = 0; k < row.size(); ++k) {
+      Shelf_slot& slot = slots[row[k]];
+      slot.x = x;
+      slot.y = y;
+      slot.width = whole[k] + 2 * gutter;
+      slot.height = H + 2 * gutter;
+      const bool own_size = k == 0 && !first_fits;
+      // Rounding may not take a chart out of its tolerances: it is drawn
+      // within them, inside a slot of whole texels.
+      slot.drawn_width = own_size ? sizes[row[k]][0] : (std::min)(double(whole[k]), most[k]);
+      slot.drawn_height = drawn_height[k];
+      x += slot.width;
+    }
+    if(x > resolution) return false;
+    y += H + 2 * gutter;
+    next += row.size();
+  }
+  return true;
+}
+
 } // namespace internal
 
 /// Packs the charts of `atlas` into one square texture (see the top of this
@@ -136,6 +317,10 @@ Chart_packing pack_charts(const Uv_atlas<TriangleMesh, Kernel>& atlas, VertexPoi
 {
   if(options.resolution < 1 || options.gutter < 0)
     throw std::invalid_argument("pack_charts: the resolution must be positive and the gutter not negative");
+  if(!(options.density_tolerance >= 0. && options.density_tolerance < 1. && options.aspect_tolerance >= 0. &&
+       std::isfinite(options.aspect_tolerance)))
+    throw std::invalid_argument("pack_charts: the density tolerance must lie in [0,1) and the aspect tolerance "
+                                "must be finite and not negative");
   const std::size_t n = atlas.number_of_charts();
   Chart_packing packing;
   packing.resolution = options.resolution;
@@ -181,63 +366,137 @@ Chart_packing pack_charts(const Uv_atlas<TriangleMesh, Kernel>& atlas, VertexPoi
     }
     return sizes;
   };
+  const bool shelves = options.packer == Chart_packer::shelves;
   std::vector<std::array<int, 2>> at;
+  std::vector<internal::Shelf_slot> shelf_slots;
   const auto fits = [&](double s) {
+    if(shelves) {
+      std::vector<std::array<double, 2>> sizes;
+      sizes.reserve(placed.size());
+      for(std::size_t c : placed)
+        sizes.push_back(turned[c] ? std::array<double, 2>{s * extent[c][1], s * extent[c][0]}
+                                  : std::array<double, 2>{s * extent[c][0], s * extent[c][1]});
+      return internal::pack_shelves(options.resolution, g, options.density_tolerance, options.aspect_tolerance,
+                                    sizes, shelf_slots);
+    }
     const auto sizes = slot_sizes(s);
     for(const auto& size : sizes)
       if(size[0] > options.resolution || size[1] > options.resolution) return false;
     return internal::pack_rectangles(options.resolution, sizes, at);
   };
-  // No density packs more area than the texture holds, nor a chart wider than it.
+  // No density packs more area than the texture holds, nor a chart wider
+  // than it (shelves may draw a chart a little smaller than the density says).
   const double r = options.resolution;
-  const double bound = (std::min)(r / std::sqrt(total_area), r / longest) * (1. + 1e-9);
-  double low = 0.;
-  std::vector<std::array<int, 2>> best_at;
-  std::vector<char> best_turned;
+  const double smallest_share =
+      shelves ? (1. - options.density_tolerance) / std::sqrt(1. + options.aspect_tolerance) : 1.;
+  const double bound =
+      (std::min)(r / std::sqrt(total_area), r / longest) / smallest_share * (1. + 1e-9);
+  // Each way of turning, its largest density that fits (by bisection) and
+  // the slots found at it; kept: the way that covers the most texels.
+  struct Found {
+    double density = 0., covered = -1.;
+    std::vector<char> turned;
+    std::vector<std::array<int, 2>> at;
+    std::vector<internal::Shelf_slot> shelf_slots;
+  };
+  Found best;
+  const auto covered_by = [](const std::vector<internal::Shelf_slot>& slots) {
+    double c = 0.;
+    for(const auto& slot : slots) c += slot.drawn_width * slot.drawn_height;
+    return c;
+  };
   for(int policy = 0; policy < (options.rotate ? 3 : 1); ++policy) {
     turn(policy);
     double lo = 0., hi = bound;
-    std::vector<std::array<int, 2>> found;
+    Found here;
+    const auto keep = [&](double s) {
+      here.density = s;
+      here.covered = 0.;
+      here.at = at;
+      here.shelf_slots = shelf_slots;
+    };
     if(fits(hi)) {
-      lo = hi;
-      found = at;
+      keep(hi);
+    } else if(shelves) {
+      // Whether rows fit is not monotone in the density (a row more or less
+      // moves every later row), so bisection could stop far below the best:
+      // step down from the bound by 0.3 % until the rows fit, then bisect
+      // within that step, keeping the packing that covers the most.
+      // Below a thousandth of the bound every chart is under a texel; the
+      // rows then fit unless the gutters alone do not.
+      const double floor = 1e-3 * hi;
+      double s = hi;
+      while(s > floor && !fits(s)) {
+        hi = s;
+        s *= 0.997;
+      }
+      if(s > floor) {
+        lo = s;
+        keep(s);
+        double kept = covered_by(shelf_slots);
+        for(int step = 0; step < 12; ++step) {
+          const double mid = 0.5 * (lo + hi);
+          if(fits(mid)) {
+            lo = mid;
+            const double c = covered_by(shelf_slots);
+            if(c > kept) {
+              kept = c;
+              keep(mid);
+            }
+          } else {
+            hi = mid;
+          }
+        }
+      }
     } else {
       for(int step = 0; step < 40 && hi - lo > 1e-4 * hi; ++step) {
         const double mid = 0.5 * (lo + hi);
         if(fits(mid)) {
           lo = mid;
-          found = at;
+          keep(mid);
         } else {
           hi = mid;
         }
       }
     }
-    if(!found.empty() && (best_at.empty() || lo > low)) {
-      low = lo;
-      best_at = std::move(found);
-      best_turned = turned;
+    if(here.covered < 0.) continue; // not even the smallest density fits
+    for(std::size_t k = 0; k < placed.size(); ++k) {
+      const std::size_t c = placed[k];
+      here.covered += shelves ? here.shelf_slots[k].drawn_width * here.shelf_slots[k].drawn_height
+                              : here.density * here.density * extent[c][0] * extent[c][1];
     }
+    here.turned = turned;
+    if(here.covered > best.covered) best = std::move(here);
   }
-  if(best_at.empty()) // the gutters alone do not fit
+  if(best.covered < 0.) // the gutters alone do not fit
     throw std::invalid_argument("pack_charts: the charts do not fit in the texture with their gutters: raise the "
                                 "resolution or narrow the gutter");
-  turned = best_turned;
-  const double s = low;
+  turned = best.turned;
+  const double s = best.density;
   packing.texels_per_unit = s;
   const auto sizes = slot_sizes(s);
-  double covered = 0.;
   for(std::size_t k = 0; k < placed.size(); ++k) {
     Packed_chart& p = packing.charts[placed[k]];
     p.rotated = turned[placed[k]] != 0;
-    p.x = best_at[k][0];
-    p.y = best_at[k][1];
-    p.width = sizes[k][0];
-    p.height = sizes[k][1];
-    p.extent_u = s * extent[placed[k]][0];
-    p.extent_v = s * extent[placed[k]][1];
-    covered += p.extent_u * p.extent_v;
+    if(shelves) {
+      const internal::Shelf_slot& slot = best.shelf_slots[k];
+      p.x = slot.x;
+      p.y = slot.y;
+      p.width = slot.width;
+      p.height = slot.height;
+      // A turned chart lies with its v along the texture's width.
+      p.extent_u = p.rotated ? slot.drawn_height : slot.drawn_width;
+      p.extent_v = p.rotated ? slot.drawn_width : slot.drawn_height;
+    } else {
+      p.x = best.at[k][0];
+      p.y = best.at[k][1];
+      p.width = sizes[k][0];
+      p.height = sizes[k][1];
+      p.extent_u = s * extent[placed[k]][0];
+      p.extent_v = s * extent[placed[k]][1];
+    }
   }
-  packing.coverage = covered / (r * r);
+  packing.coverage = best.covered / (r * r);
   return packing;
 }
 
