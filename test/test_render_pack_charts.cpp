@@ -14,6 +14,7 @@
 #include <cmath>
 #include <memory>
 #include <limits>
+#include <map>
 #include <set>
 #include <vector>
 
@@ -267,7 +268,86 @@ TEST(PackCharts, ShelvesCoverMoreThanTheSkyline)
   }
 }
 
-// Tolerances out of range are refused with a message.
+// The shelves on sizes no mesh gave them: many equal squares, a spread from
+// sub-texel to a quarter of the texture, one chart wider than the texture.
+// Slots inside the texture and pairwise apart, each chart drawn inside its
+// slot a gutter from its edges, every chart of at least a texel within its
+// density and aspect tolerances.
+TEST(PackCharts, ShelvesOnSizesOfEveryKind)
+{
+  const int R = 256, g = 2;
+  const double dt = 0.045, at = 0.10;
+  std::vector<std::array<double, 2>> equal(100, {20., 20.}), spread;
+  unsigned state = 12345;
+  const auto random = [&state] { // a fixed linear congruential sequence in [0,1)
+    state = state * 1103515245u + 12345u;
+    return double((state >> 8) & 0xffffu) / 65536.;
+  };
+  for(int k = 0; k < 300; ++k) {
+    const double side = 0.3 * std::pow(200., random()); // 0.3 to 60 texels
+    spread.push_back({side * (0.5 + random()), side});
+  }
+  std::vector<std::array<double, 2>> specks(500, {0.2, 0.7}), needles(50, {0.3, 12.});
+  for(const auto* sizes : {&equal, &spread, &specks, &needles}) {
+    std::vector<diffuv::internal::Shelf_slot> slots;
+    // The largest scale at which they fit (sizes grow with it), found by stepping down.
+    double scale = 4.;
+    std::vector<std::array<double, 2>> scaled;
+    bool fitted = false;
+    for(; scale > 0.01 && !fitted; scale *= 0.97) {
+      scaled = *sizes;
+      for(auto& s : scaled) s = {s[0] * scale, s[1] * scale};
+      fitted = diffuv::internal::pack_shelves(R, g, dt, at, scaled, slots);
+    }
+    ASSERT_TRUE(fitted);
+    ASSERT_EQ(slots.size(), scaled.size());
+    double covered = 0.;
+    for(std::size_t a = 0; a < slots.size(); ++a) {
+      const auto& p = slots[a];
+      EXPECT_GE(p.x, 0);
+      EXPECT_GE(p.y, 0);
+      EXPECT_LE(p.x + p.width, R);
+      EXPECT_LE(p.y + p.height, R);
+      EXPECT_LE(p.drawn_width + 2 * g, p.width + 1e-9) << a;
+      EXPECT_LE(p.drawn_height + 2 * g, p.height + 1e-9) << a;
+      for(std::size_t b = a + 1; b < slots.size(); ++b) {
+        const auto& q = slots[b];
+        EXPECT_TRUE(p.x + p.width <= q.x || q.x + q.width <= p.x || p.y + p.height <= q.y || q.y + q.height <= p.y)
+            << a << " and " << b;
+      }
+      const double w = scaled[a][0], h = scaled[a][1];
+      covered += p.drawn_width * p.drawn_height;
+      const double density = std::sqrt(p.drawn_width * p.drawn_height / (w * h));
+      EXPECT_NEAR(density, 1., dt + 1e-9) << a << ": " << w << " x " << h;
+      const double aspect = (p.drawn_width / p.drawn_height) / (w / h);
+      EXPECT_LE(aspect, 1. + at + 1e-9) << a;
+      EXPECT_GE(aspect, 1. / (1. + at) - 1e-9) << a;
+    }
+    if(sizes == &equal || sizes == &spread) EXPECT_GT(covered, 0.5 * R * R);
+  }
+  // Equal squares where the tolerances can close a row (ten 20-texel
+  // squares drawn 19 high need 20.4 texels each of 244): every row ends at
+  // the texture's edge.
+  {
+    const int R2 = 244;
+    std::vector<diffuv::internal::Shelf_slot> slots;
+    std::vector<std::array<double, 2>> squares(100, {20., 20.});
+    ASSERT_TRUE(diffuv::internal::pack_shelves(R2, g, dt, at, squares, slots));
+    std::map<int, int> row_end;
+    for(const auto& p : slots) row_end[p.y] = std::max(row_end[p.y], p.x + p.width);
+    ASSERT_GT(row_end.size(), 1u);
+    for(const auto& [y, end] : row_end) EXPECT_EQ(end, R2) << "row at " << y;
+  }
+  // A chart wider than the texture, or rows taller than it: no packing.
+  std::vector<diffuv::internal::Shelf_slot> slots;
+  EXPECT_FALSE(diffuv::internal::pack_shelves(R, g, dt, at, {{300., 10.}}, slots));
+  EXPECT_FALSE(diffuv::internal::pack_shelves(R, g, dt, at, std::vector<std::array<double, 2>>(40, {200., 200.}), slots));
+  EXPECT_TRUE(diffuv::internal::pack_shelves(R, g, dt, at, {}, slots));
+  EXPECT_TRUE(slots.empty());
+}
+
+// Tolerances out of range are refused with a message; the smallest
+// textures pack or are refused.
 TEST(PackCharts, ShelvesRefuseBadTolerances)
 {
   const Mesh& cow = cgal_mesh("cow.off");
@@ -277,9 +357,22 @@ TEST(PackCharts, ShelvesRefuseBadTolerances)
     o.density_tolerance = bad;
     EXPECT_THROW(diffuv::pack_charts(*mapped.atlas, cow.points(), o), std::invalid_argument) << bad;
     o = diffuv::Chart_packing_options();
-    o.aspect_tolerance = bad < 1. ? bad : std::numeric_limits<double>::infinity();
+    o.aspect_tolerance = bad < 1. ? bad : 1.5;
     EXPECT_THROW(diffuv::pack_charts(*mapped.atlas, cow.points(), o), std::invalid_argument) << bad;
   }
+  diffuv::Chart_packing_options o;
+  o.aspect_tolerance = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW(diffuv::pack_charts(*mapped.atlas, cow.points(), o), std::invalid_argument);
+  // Without gutters, and at a texture too small for cow's 291 charts with
+  // them: a packing, or a clear refusal, quickly.
+  o = diffuv::Chart_packing_options();
+  o.gutter = 0;
+  o.resolution = 32;
+  const auto tight = diffuv::pack_charts(*mapped.atlas, cow.points(), o);
+  EXPECT_GT(tight.coverage, 0.);
+  o.gutter = 1;
+  o.resolution = 16;
+  EXPECT_THROW(diffuv::pack_charts(*mapped.atlas, cow.points(), o), std::invalid_argument);
 }
 
 // Turning where it packs better never packs worse than not turning, and is

@@ -12,12 +12,12 @@
 //      none turned: whichever packs densest
 //   -> a gutter of texels around it (bilinear filtering and mipmaps must not
 //      mix two charts' texels)
-//   -> the largest density at which every chart fits, with one of two
-//      packers:
+//   -> the largest density at which every chart fits (with shelves, each
+//      chart's within a tolerance of it), with one of two packers:
 //      - shelves (the default): rows of charts of one height, tallest first,
 //        each row filled to the texture's edge by letting every chart's
-//        density and aspect give a little (within 4.5 % and 10 %); the
-//        charts then fill whole texels, so only the gutters are lost;
+//        density and aspect give a little (within 4.5 % and 10 %); most
+//        charts then fill their slots to the gutters in whole texels;
 //      - skyline: stb_rect_pack's packer (Debian's libstb-dev), every chart
 //        at exactly one density and its own aspect, in a slot rounded up to
 //        whole texels (the chart is not stretched to the rounded size).
@@ -212,7 +212,7 @@ inline bool pack_shelves(int resolution, int gutter, double density_tolerance, d
       std::array<double, 2> range;
       double preferred, tall = sizes[order[j]][1];
       if(j == next && !first_fits) {
-        range = {std::ceil(w - 1e-9), std::ceil(w - 1e-9)};
+        range = {(std::max)(1., std::ceil(w - 1e-9)), (std::max)(1., std::ceil(w - 1e-9))};
         preferred = range[0];
       } else {
         if(H < shortest * h - 1e-9) break; // cannot be drawn this low
@@ -221,12 +221,12 @@ inline bool pack_shelves(int resolution, int gutter, double density_tolerance, d
         // height: the row is still filled to the edge).
         tall = H > tallest * h + 1e-9 ? high_density * h : static_cast<double>(H);
         range = widths(w, h, tall);
-        range[0] = (std::max)(range[0], 1.);
-        range[1] = (std::max)(range[1], range[0]);
+        range[1] = (std::max)(range[1], range[0]); // equal up to rounding
         preferred = (std::min)((std::max)(tall * w / h, range[0]), range[1]); // its own aspect where it can
       }
-      // The row holds it if every chart fits at its least whole width.
-      const double fewest_texels = std::ceil(range[0] - 1e-9);
+      // The row holds it if every chart fits at its least whole width (a
+      // slot is at least a texel wide; a narrower chart is drawn narrower).
+      const double fewest_texels = (std::max)(1., std::ceil(range[0] - 1e-9));
       if(sum_least + fewest_texels + g2 * static_cast<double>(row.size() + 1) > R) break;
       row.push_back(order[j]);
       least.push_back(range[0]);
@@ -251,14 +251,15 @@ inline bool pack_shelves(int resolution, int gutter, double density_tolerance, d
       for(std::size_t k = 0; k < row.size(); ++k) width[k] -= t * (width[k] - least[k]);
     }
     // Whole texels: each width rounded down (not below its tolerance),
-    // then texels taken from or handed to the widths by their remainders,
-    // each within its tolerance, so that the row ends at the edge.
+    // then texels taken from or handed to the widths by their remainders
+    // so that the row ends at the edge; a chart is drawn no wider than its
+    // tolerance allows, even in a slot a fraction of a texel wider.
     sum = 0.;
     std::vector<int> whole(row.size()), fewest(row.size());
     int whole_sum = 0;
     for(std::size_t k = 0; k < row.size(); ++k) {
       sum += width[k];
-      fewest[k] = static_cast<int>(std::ceil(least[k] - 1e-9));
+      fewest[k] = (std::max)(1, static_cast<int>(std::ceil(least[k] - 1e-9)));
       whole[k] = (std::max)(fewest[k], static_cast<int>(std::floor(width[k] + 1e-9)));
       whole_sum += whole[k];
     }
@@ -270,7 +271,7 @@ inline bool pack_shelves(int resolution, int gutter, double density_tolerance, d
       return width[a] - whole[a] > width[b] - whole[b];
     });
     for(std::size_t k = 0; whole_sum < wanted && k < by_remainder.size(); ++k)
-      if(whole[by_remainder[k]] + 1 <= most[by_remainder[k]] + 1e-9) {
+      if(whole[by_remainder[k]] < most[by_remainder[k]] - 1e-9) { // drawn no wider than its most
         ++whole[by_remainder[k]];
         ++whole_sum;
       }
@@ -304,7 +305,8 @@ inline bool pack_shelves(int resolution, int gutter, double density_tolerance, d
 } // namespace internal
 
 /// Packs the charts of `atlas` into one square texture (see the top of this
-/// file): one texel density for every chart, as large as lets them all fit.
+/// file): one texel density for every chart (with shelves, each chart's
+/// within `density_tolerance` of it), as large as lets them all fit.
 ///
 /// \tparam VertexPointMap a readable property map from the mesh's vertices to 3D points
 /// \param vpm the points, for the patches' areas
@@ -318,9 +320,9 @@ Chart_packing pack_charts(const Uv_atlas<TriangleMesh, Kernel>& atlas, VertexPoi
   if(options.resolution < 1 || options.gutter < 0)
     throw std::invalid_argument("pack_charts: the resolution must be positive and the gutter not negative");
   if(!(options.density_tolerance >= 0. && options.density_tolerance < 1. && options.aspect_tolerance >= 0. &&
-       std::isfinite(options.aspect_tolerance)))
+       options.aspect_tolerance <= 1.))
     throw std::invalid_argument("pack_charts: the density tolerance must lie in [0,1) and the aspect tolerance "
-                                "must be finite and not negative");
+                                "in [0,1]");
   const std::size_t n = atlas.number_of_charts();
   Chart_packing packing;
   packing.resolution = options.resolution;
@@ -387,10 +389,11 @@ Chart_packing pack_charts(const Uv_atlas<TriangleMesh, Kernel>& atlas, VertexPoi
   // No density packs more area than the texture holds, nor a chart wider
   // than it (shelves may draw a chart a little smaller than the density says).
   const double r = options.resolution;
-  const double smallest_share =
+  const double area_share = shelves ? 1. - options.density_tolerance : 1.;
+  const double length_share =
       shelves ? (1. - options.density_tolerance) / std::sqrt(1. + options.aspect_tolerance) : 1.;
   const double bound =
-      (std::min)(r / std::sqrt(total_area), r / longest) / smallest_share * (1. + 1e-9);
+      (std::min)(r / (std::sqrt(total_area) * area_share), r / (longest * length_share)) * (1. + 1e-9);
   // Each way of turning, its largest density that fits (by bisection) and
   // the slots found at it; kept: the way that covers the most texels.
   struct Found {
@@ -422,15 +425,20 @@ Chart_packing pack_charts(const Uv_atlas<TriangleMesh, Kernel>& atlas, VertexPoi
       // moves every later row), so bisection could stop far below the best:
       // step down from the bound by 0.3 % until the rows fit, then bisect
       // within that step, keeping the packing that covers the most.
-      // Below a thousandth of the bound every chart is under a texel; the
-      // rows then fit unless the gutters alone do not.
-      const double floor = 1e-3 * hi;
-      double s = hi;
-      while(s > floor && !fits(s)) {
-        hi = s;
-        s *= 0.997;
-      }
-      if(s > floor) {
+      // At the floor every chart is under a texel (at the bound the
+      // longest spans at most r / length_share texels): if the rows do not
+      // fit there, the gutters alone do not, and stepping down is vain.
+      const double floor = hi / (2. * r);
+      if(fits(floor)) {
+        double s = hi;
+        while(s > floor && !fits(s)) {
+          hi = s;
+          s *= 0.997;
+        }
+        if(s <= floor) {
+          s = floor;
+          fits(s);
+        }
         lo = s;
         keep(s);
         double kept = covered_by(shelf_slots);
