@@ -76,6 +76,21 @@ std::vector<int> charts_per_texel(const Atlas& atlas, const diffuv::Chart_packin
   return count;
 }
 
+// A face's three corners under two corner maps (e.g. the chart's own
+// coordinates and the packed ones).
+template <class MapA, class MapB>
+std::array<std::array<Point_2, 3>, 2> corners_under(const Mesh& m, boost::graph_traits<Mesh>::face_descriptor f,
+                                                    const MapA& first, const MapB& second)
+{
+  std::array<std::array<Point_2, 3>, 2> t;
+  std::size_t k = 0;
+  for(auto h : CGAL::halfedges_around_face(m.halfedge(f), m)) {
+    t[0][k] = get(first, h);
+    t[1][k++] = get(second, h);
+  }
+  return t;
+}
+
 // cow's charts at 512 x 512: every packed point inside its chart's slot and
 // inside the texture, no texel sampled by two charts, the covered share as
 // counted by rasterising equal to the reported coverage, one texel density.
@@ -174,12 +189,7 @@ TEST(PackCharts, TurningKeepsOrientationAndShape)
     const double scale = packing.charts[c].extent_u / size[0]; // texels per unit of the rectangle
     EXPECT_NEAR(packing.charts[c].extent_v / size[1], scale, 1e-9 * scale);
     for(auto f : atlas.chart(c).faces) {
-      std::array<Point_2, 3> a, b;
-      std::size_t k = 0;
-      for(auto h : CGAL::halfedges_around_face(cow.halfedge(f), cow)) {
-        a[k] = get(rectangle, h);
-        b[k++] = get(packed, h);
-      }
+      const auto [a, b] = corners_under(cow, f, rectangle, packed);
       const double area_a = CGAL::area(a[0], a[1], a[2]);
       const double area_b = CGAL::area(b[0], b[1], b[2]) * packing.resolution * packing.resolution;
       EXPECT_NEAR(area_b, area_a * scale * scale, 1e-6 * std::abs(area_a) * scale * scale + 1e-12) << "chart " << c;
@@ -220,12 +230,7 @@ TEST(PackCharts, ShelvesKeepOrientationAndOneScalePerChart)
     const auto& p = packing.charts[c];
     turned += p.rotated;
     for(auto f : atlas.chart(c).faces) {
-      std::array<Point_2, 3> a, b;
-      std::size_t k = 0;
-      for(auto h : CGAL::halfedges_around_face(cow.halfedge(f), cow)) {
-        a[k] = get(square, h);
-        b[k++] = get(packed, h);
-      }
+      const auto [a, b] = corners_under(cow, f, square, packed);
       const double area_a = CGAL::area(a[0], a[1], a[2]);
       const double area_b = CGAL::area(b[0], b[1], b[2]) * r * r;
       if(std::abs(area_a) < 1e-12) continue;
