@@ -279,20 +279,14 @@ void run_bake(Bake_cli_options& o)
   std::cout << "diffuv bake " << in.path << ": " << count_text(in.report.vertices, "vertex", "vertices") << ", "
             << count_text(num_faces(in.mesh), "face") << "; " << count_text(result.seg.number_of_patches(), "patch", "patches")
             << (in.face_labels.empty() ? std::string() : " (" + in.label_source + ")") << "\n";
-  char line[300];
-  std::snprintf(line, sizeof line,
-                "atlas: %zu charts packed into %d x %d texels (gutter %d, %s): %.1f %% of the texels covered, %.4g "
-                "texels per unit of length%s",
-                atlas.number_of_charts(), options.texture_size, options.texture_size, options.gutter,
-                options.packer.c_str(), 100. * packing.coverage, packing.texels_per_unit,
-                options.packer == "shelves" ? " (each chart's within 4.5 %)" : "");
-  std::cout << line << "\n";
+  std::cout << packing_summary(atlas.number_of_charts(), options, packing) << "\n";
   std::cout << "baked " << o.what << " (" << data.note << (from ? ", from the closest points of " + o.from : std::string())
             << "): " << baked.face_texels << " texels from the faces, " << baked.vertex_texels
             << " around the vertices, " << baked.gutter_texels << " in the gutters (" << o.dilation << " passes); "
             << Stage_clock::duration(bake_ms) << "\n";
   if(!from && !data.vertex_rgb.empty()) {
     const Read_back_check check = check_read_back(in.mesh, corner, baked.image, data.vertex_rgb);
+    char line[300];
     std::snprintf(line, sizeof line,
                   "read back at the vertices (bilinear): %.1f %% within 1/255; %.1f %% of the %zu vertices that no "
                   "other vertex crowds within 2 texels",

@@ -8,6 +8,9 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cstdio>
+#include <string>
+
 namespace diffuv_cli {
 
 /// The library's packing options from the command line's.
@@ -18,6 +21,22 @@ inline diffuv::Chart_packing_options packing_options(const Param_options& o)
   packing.gutter = o.gutter;
   packing.packer = o.packer == "skyline" ? diffuv::Chart_packer::skyline : diffuv::Chart_packer::shelves;
   return packing;
+}
+
+/// The summary line of a packing: `atlas: N charts packed into ...`.
+inline std::string packing_summary(std::size_t charts, const Param_options& o, const diffuv::Chart_packing& packing)
+{
+  const diffuv::Chart_packing_options used = packing_options(o);
+  char within[64] = "";
+  if(used.packer == diffuv::Chart_packer::shelves)
+    std::snprintf(within, sizeof within, " (each chart's within %.3g %%)", 100. * used.density_tolerance);
+  char line[300];
+  std::snprintf(line, sizeof line,
+                "atlas: %zu charts packed into %d x %d texels (gutter %d, %s): %.1f %% of the texels covered, %.4g "
+                "texels per unit of length%s",
+                charts, o.texture_size, o.texture_size, o.gutter, o.packer.c_str(), 100. * packing.coverage,
+                packing.texels_per_unit, within);
+  return line;
 }
 
 /// --packer shelves|skyline.

@@ -143,14 +143,7 @@ void run_param(const Param_options& options)
                                                        " texels with gutters of " + std::to_string(options.gutter) +
                                                        ": raise --texture-size or lower --gutter");
     }
-    char line[200];
-    std::snprintf(line, sizeof line,
-                  "atlas: %zu charts packed into %d x %d texels (gutter %d, %s): %.1f %% of the texels covered, %.4g "
-                  "texels per unit of length%s",
-                  atlas.number_of_charts(), options.texture_size, options.texture_size, options.gutter,
-                  options.packer.c_str(), 100. * packing.coverage, packing.texels_per_unit,
-                  options.packer == "shelves" ? " (each chart's within 4.5 %)" : "");
-    atlas_line = line;
+    atlas_line = packing_summary(atlas.number_of_charts(), options, packing);
     stages.done("pack");
   }
   diffuv::Output_folder out(options.output, inputs);

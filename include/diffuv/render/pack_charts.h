@@ -468,10 +468,10 @@ Chart_packing pack_charts(const Uv_atlas<TriangleMesh, Kernel>& atlas, VertexPoi
       }
     }
     if(here.covered < 0.) continue; // not even the smallest density fits
-    for(std::size_t k = 0; k < placed.size(); ++k) {
-      const std::size_t c = placed[k];
-      here.covered += shelves ? here.shelf_slots[k].drawn_width * here.shelf_slots[k].drawn_height
-                              : here.density * here.density * extent[c][0] * extent[c][1];
+    if(shelves) {
+      here.covered = covered_by(here.shelf_slots);
+    } else {
+      for(std::size_t c : placed) here.covered += here.density * here.density * extent[c][0] * extent[c][1];
     }
     here.turned = turned;
     if(here.covered > best.covered) best = std::move(here);
@@ -482,7 +482,7 @@ Chart_packing pack_charts(const Uv_atlas<TriangleMesh, Kernel>& atlas, VertexPoi
   turned = best.turned;
   const double s = best.density;
   packing.texels_per_unit = s;
-  const auto sizes = slot_sizes(s);
+  const auto sizes = shelves ? std::vector<std::array<int, 2>>() : slot_sizes(s);
   for(std::size_t k = 0; k < placed.size(); ++k) {
     Packed_chart& p = packing.charts[placed[k]];
     p.rotated = turned[placed[k]] != 0;
