@@ -100,12 +100,16 @@ TEST_F(Tool, TheObjChartsArePackedIntoOneTexture)
       b = {std::min(b[0], 512 * q[0]), std::min(b[1], 512 * q[1]), std::max(b[2], 512 * q[0]), std::max(b[3], 512 * q[1])};
     }
   // The OBJ's charts are its connected pieces of texture coordinates: the
-  // packed ones never touch, so each is one patch's chart, 6 texels from any other.
-  for(std::size_t a = 0; a < box.size(); ++a)
+  // packed ones never touch, so each is one patch's chart, a gutter (3
+  // texels) from any other and half of one from the texture's edges.
+  for(std::size_t a = 0; a < box.size(); ++a) {
+    EXPECT_GE(std::min(box[a][0], box[a][1]), 1.5 - 1e-6) << "chart " << a;
+    EXPECT_LE(std::max(box[a][2], box[a][3]), 512 - 1.5 + 1e-6) << "chart " << a;
     for(std::size_t b = a + 1; b < box.size(); ++b) {
       const double gap = std::max({box[b][0] - box[a][2], box[a][0] - box[b][2], box[b][1] - box[a][3], box[a][1] - box[b][3]});
-      EXPECT_GE(gap, 6. - 1e-6) << "charts " << a << " and " << b;
+      EXPECT_GE(gap, 3. - 1e-6) << "charts " << a << " and " << b;
     }
+  }
 
   const Tool_run stacked = run("param " + data_path("meshes/cow.off") + " --stacked -o " + (out_dir() / "stacked").string());
   ASSERT_EQ(stacked.code, 0) << stacked.err;

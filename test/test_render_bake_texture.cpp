@@ -14,6 +14,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <limits>
+#include <map>
 #include <memory>
 #include <vector>
 
@@ -232,6 +235,48 @@ TEST(BakeTexture, DilationFillsTheGuttersSoBordersDoNotBleed)
   EXPECT_GT(edges, 100u);
   EXPECT_LT(worst_dilated, 0.06) << "a chart's border reads the background";
   EXPECT_GT(worst_bare, 0.2);
+}
+
+// The dilation's two helpers. The max-norm distance to a triangle against a
+// brute force over a fine grid of the triangle's points (never below it, and
+// within the grid's step of it); the texture's islands of cow's packed atlas
+// are its charts, face for face.
+TEST(BakeTexture, NearestChartHelpers)
+{
+  unsigned state = 2024;
+  const auto random = [&state] { // a fixed linear congruential sequence in [0,1)
+    state = state * 1103515245u + 12345u;
+    return double((state >> 8) & 0xffffu) / 65536.;
+  };
+  for(int trial = 0; trial < 300; ++trial) {
+    std::array<double, 6> t;
+    for(double& c : t) c = 10. * random();
+    const double x = 14. * random() - 2., y = 14. * random() - 2.;
+    const double d = diffuv::internal::max_norm_distance_to_triangle(x, y, t);
+    double brute = std::numeric_limits<double>::infinity();
+    const int steps = 400;
+    for(int i = 0; i <= steps; ++i)
+      for(int j = 0; i + j <= steps; ++j) {
+        const double a = double(i) / steps, b = double(j) / steps, c = 1. - a - b;
+        const double px = a * t[0] + b * t[2] + c * t[4], py = a * t[1] + b * t[3] + c * t[5];
+        brute = std::min(brute, std::max(std::abs(px - x), std::abs(py - y)));
+      }
+    EXPECT_LE(d, brute + 1e-9) << trial;
+    EXPECT_GE(d, brute - 0.05) << trial;
+  }
+
+  const Mesh& cow = cgal_mesh("cow.off");
+  const Packed_mesh packed = pack_default(cow, 512);
+  const auto corner = diffuv::packed_corner_map(*packed.atlas, packed.packing);
+  std::vector<Mesh::Face_index> faces(cow.faces().begin(), cow.faces().end());
+  const std::vector<std::int32_t> island = diffuv::internal::texture_islands(cow, corner, faces);
+  std::map<std::int32_t, std::size_t> chart_of_island;
+  for(std::size_t k = 0; k < faces.size(); ++k) {
+    const std::size_t chart = packed.atlas->chart_of(faces[k]);
+    const auto [it, inserted] = chart_of_island.emplace(island[k], chart);
+    EXPECT_EQ(it->second, chart) << "face " << k << " joins two charts";
+  }
+  EXPECT_EQ(chart_of_island.size(), packed.atlas->number_of_charts());
 }
 
 // From another mesh by closest point: cow's colours taken from cow itself are

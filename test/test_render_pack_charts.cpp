@@ -110,7 +110,7 @@ TEST(PackCharts, CowChartsShareOneTextureWithoutOverlap)
   // Slots inside the texture, pairwise apart.
   for(std::size_t a = 0; a < packing.charts.size(); ++a) {
     const auto& p = packing.charts[a];
-    ASSERT_GT(p.width, 2 * options.gutter);
+    ASSERT_GT(p.width, options.gutter);
     EXPECT_GE(p.x, 0);
     EXPECT_GE(p.y, 0);
     EXPECT_LE(p.x + p.width, options.resolution);
@@ -121,9 +121,10 @@ TEST(PackCharts, CowChartsShareOneTextureWithoutOverlap)
       EXPECT_TRUE(apart) << "charts " << a << " and " << b;
     }
   }
-  // Each chart's points inside its slot, a gutter away from the slot's edges.
+  // Each chart's points inside its slot, half a gutter away from the slot's
+  // edges (so two charts lie a whole gutter apart).
   const auto corner = diffuv::packed_corner_map(atlas, packing);
-  const double r = options.resolution, g = options.gutter;
+  const double r = options.resolution, g = 0.5 * options.gutter;
   for(std::size_t c = 0; c < atlas.number_of_charts(); ++c) {
     const auto& p = packing.charts[c];
     double chart_area = 0.;
@@ -147,7 +148,7 @@ TEST(PackCharts, CowChartsShareOneTextureWithoutOverlap)
     const double aspect_change = (p.extent_u / p.extent_v) / (size[0] / size[1]);
     EXPECT_LE(aspect_change, 1. + options.aspect_tolerance + 1e-9) << "chart " << c;
     EXPECT_GE(aspect_change, 1. / (1. + options.aspect_tolerance) - 1e-9) << "chart " << c;
-    // Drawn in its slot, which is whole texels: only the gutters are left.
+    // Drawn in its slot, which is whole texels: only the half gutters are left.
     EXPECT_LE(p.extent_u + 2 * g, (p.rotated ? p.height : p.width) + 1e-9);
     EXPECT_LE(p.extent_v + 2 * g, (p.rotated ? p.width : p.height) + 1e-9);
   }
@@ -276,7 +277,7 @@ TEST(PackCharts, ShelvesCoverMoreThanTheSkyline)
 // The shelves on sizes no mesh gave them: many equal squares, a spread from
 // sub-texel to a quarter of the texture, one chart wider than the texture.
 // Slots inside the texture and pairwise apart, each chart drawn inside its
-// slot a gutter from its edges, every chart of at least a texel within its
+// slot half a gutter from its edges, every chart of at least a texel within its
 // density and aspect tolerances.
 TEST(PackCharts, ShelvesOnSizesOfEveryKind)
 {
@@ -313,8 +314,8 @@ TEST(PackCharts, ShelvesOnSizesOfEveryKind)
       EXPECT_GE(p.y, 0);
       EXPECT_LE(p.x + p.width, R);
       EXPECT_LE(p.y + p.height, R);
-      EXPECT_LE(p.drawn_width + 2 * g, p.width + 1e-9) << a;
-      EXPECT_LE(p.drawn_height + 2 * g, p.height + 1e-9) << a;
+      EXPECT_LE(p.drawn_width + g, p.width + 1e-9) << a;
+      EXPECT_LE(p.drawn_height + g, p.height + 1e-9) << a;
       for(std::size_t b = a + 1; b < slots.size(); ++b) {
         const auto& q = slots[b];
         EXPECT_TRUE(p.x + p.width <= q.x || q.x + q.width <= p.x || p.y + p.height <= q.y || q.y + q.height <= p.y)
@@ -331,10 +332,10 @@ TEST(PackCharts, ShelvesOnSizesOfEveryKind)
     if(sizes == &equal || sizes == &spread) EXPECT_GT(covered, 0.5 * R * R);
   }
   // Equal squares where the tolerances can close a row (ten 20-texel
-  // squares drawn 19 high need 20.4 texels each of 244): every row ends at
-  // the texture's edge.
+  // squares drawn 19 high need 20.4 texels each of 224, with their 2-texel
+  // gutters; eleven would not fit): every row ends at the texture's edge.
   {
-    const int R2 = 244;
+    const int R2 = 224;
     std::vector<diffuv::internal::Shelf_slot> slots;
     std::vector<std::array<double, 2>> squares(100, {20., 20.});
     ASSERT_TRUE(diffuv::internal::pack_shelves(R2, g, dt, at, squares, slots));

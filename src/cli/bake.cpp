@@ -325,7 +325,7 @@ void add_bake_command(CLI::App& app)
   cmd->add_option("--resolution,--texture-size", p.texture_size, "Width and height of the texture in texels")
       ->check(number_in(16, 8192))
       ->capture_default_str();
-  cmd->add_option("--gutter", p.gutter, "Texels kept free on each side of a packed chart")
+  cmd->add_option("--gutter", p.gutter, "Texels kept free between two packed charts (half of it at the texture's edge)")
       ->check(number_in(0, 256))
       ->capture_default_str();
   add_packer_option(cmd, p);

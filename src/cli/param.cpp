@@ -308,7 +308,8 @@ void add_param_command(CLI::App& app)
       ->check(number_in(16, 8192))
       ->capture_default_str();
   CLI::Option* gutter = cmd->add_option("--gutter", options->gutter,
-                  "Texels kept free on each side of a packed chart, so that filtering does not mix two charts")
+                  "Texels kept free between two packed charts (half of it between a chart and the texture's edge), so "
+                  "that filtering does not mix two charts")
       ->check(number_in(0, 256))
       ->capture_default_str();
   CLI::Option* packer = add_packer_option(cmd, *options);

@@ -42,7 +42,7 @@ struct Param_options {
   bool unit_squares = false; // write each chart on the unit square, not on its own rectangle
   bool stacked = false;      // each chart at the texture's origin, not packed into one texture
   int texture_size = 1024;   // the packed texture's width and height, in texels
-  int gutter = 2;            // texels kept free around each packed chart
+  int gutter = 2;            // texels kept free between two packed charts
   std::string packer = "shelves"; // --packer: shelves (rows filled to the edge) or skyline (stb's, one density)
   std::string color = "patches";
   bool render_only = false; // diffuv render: the picture only

@@ -14,8 +14,12 @@
 //    vertex's value back (a texel there otherwise holds the value at its
 //    centre, up to 0.7 texels away, across faces of different slopes);
 //  - texels in no chart next to the charts (the gutters) take the mean of
-//    their baked neighbours, pass after pass ("dilation"), so that filtering
-//    at a chart's border does not mix in the background.
+//    their baked neighbours of the nearest chart, pass after pass
+//    ("dilation"), so that filtering at a chart's border does not mix in the
+//    background. Two charts packed a gutter of 2 texels apart share the
+//    texels between them: each texel goes to the chart nearer its centre,
+//    in the max-norm, which is the chart whose bilinear footprints reach it
+//    (a chart's footprints reach less than a texel beyond it).
 #ifndef DIFFUV_RENDER_BAKE_TEXTURE_H
 #define DIFFUV_RENDER_BAKE_TEXTURE_H
 
@@ -52,7 +56,7 @@ enum class Texel_source : unsigned char {
   background = 0, ///< no chart: the background colour
   face,           ///< the value at the surface point of its centre
   vertex,         ///< a vertex's own value (one of the four texels around the vertex)
-  gutter          ///< the mean of its baked neighbours (dilation)
+  gutter          ///< the mean of its baked neighbours of the nearest chart (dilation)
 };
 
 /// How `bake_texture()` bakes.
@@ -79,6 +83,70 @@ inline unsigned char unit_to_byte(double c)
   return static_cast<unsigned char>(std::lround(c * 255.));
 }
 
+/// The max-norm distance from (x, y) to the triangle `t` (x0, y0, x1, y1,
+/// x2, y2): 0 inside, else the least over its edges of the larger of |dx|
+/// and |dy|, which along an edge is least at an end, where one of them is
+/// 0, or where they are equal.
+inline double max_norm_distance_to_triangle(double x, double y, const std::array<double, 6>& t)
+{
+  const auto side = [&](int a, int b) {
+    return (t[2 * b] - t[2 * a]) * (y - t[2 * a + 1]) - (t[2 * b + 1] - t[2 * a + 1]) * (x - t[2 * a]);
+  };
+  const double s0 = side(0, 1), s1 = side(1, 2), s2 = side(2, 0);
+  if((s0 >= 0 && s1 >= 0 && s2 >= 0) || (s0 <= 0 && s1 <= 0 && s2 <= 0)) return 0.;
+  double least = std::numeric_limits<double>::infinity();
+  for(int e = 0; e < 3; ++e) {
+    const double ax = t[2 * e] - x, ay = t[2 * e + 1] - y;
+    const double dx = t[2 * ((e + 1) % 3)] - t[2 * e], dy = t[2 * ((e + 1) % 3) + 1] - t[2 * e + 1];
+    const auto at = [&](double s) {
+      s = (std::min)(1., (std::max)(0., s));
+      return (std::max)(std::abs(ax + s * dx), std::abs(ay + s * dy));
+    };
+    least = (std::min)({least, at(0.), at(1.)});
+    if(dx != 0.) least = (std::min)(least, at(-ax / dx));
+    if(dy != 0.) least = (std::min)(least, at(-ay / dy));
+    if(dx != dy) least = (std::min)(least, at((ay - ax) / (dx - dy)));
+    if(dx != -dy) least = (std::min)(least, at(-(ax + ay) / (dx + dy)));
+  }
+  return least;
+}
+
+/// The charts of `faces` under `corner_texture`: two faces sharing an edge
+/// are in one chart when both ends of the edge have the same texture point
+/// in both. Returns a chart number per entry of `faces` (the smallest entry
+/// number of its chart).
+template <class TriangleMesh, class TextureMap, class FaceDescriptor>
+std::vector<std::int32_t> texture_islands(const TriangleMesh& tm, TextureMap corner_texture,
+                                          const std::vector<FaceDescriptor>& faces)
+{
+  const auto findex = get(boost::face_index, tm);
+  std::vector<std::int32_t> local(num_faces(tm), -1), parent(faces.size());
+  for(std::size_t k = 0; k < faces.size(); ++k) {
+    local[std::size_t(get(findex, faces[k]))] = std::int32_t(k);
+    parent[k] = std::int32_t(k);
+  }
+  const auto find = [&](std::int32_t a) {
+    while(parent[std::size_t(a)] != a) a = parent[std::size_t(a)] = parent[std::size_t(parent[std::size_t(a)])];
+    return a;
+  };
+  for(std::size_t k = 0; k < faces.size(); ++k)
+    for(auto h : CGAL::halfedges_around_face(halfedge(faces[k], tm), tm)) {
+      const auto g = opposite(h, tm);
+      if(is_border(g, tm)) continue;
+      const std::int32_t other = local[std::size_t(get(findex, face(g, tm)))];
+      if(other < 0) continue;
+      // target(h) is source(g), and source(h) is target(g).
+      if(!(get(corner_texture, h) == get(corner_texture, prev(g, tm)) &&
+           get(corner_texture, prev(h, tm)) == get(corner_texture, g)))
+        continue;
+      const std::int32_t a = find(std::int32_t(k)), b = find(other);
+      if(a != b) parent[std::size_t((std::max)(a, b))] = (std::min)(a, b);
+    }
+  std::vector<std::int32_t> chart(faces.size());
+  for(std::size_t k = 0; k < faces.size(); ++k) chart[k] = find(std::int32_t(k));
+  return chart;
+}
+
 } // namespace internal
 
 /// Bakes `sample` into a texture of `options.size`^2 texels through the
@@ -89,7 +157,10 @@ inline unsigned char unit_to_byte(double c)
 /// the i-th halfedge of f from `halfedge(f, tm)` on; the four texels around a
 /// vertex's texture point take `sample(f, unit weight at that corner)` (the
 /// nearest vertex, if two are that close), unless `options.pin_vertices` is
-/// false. Then `options.dilation` passes fill the texels next to filled ones.
+/// false. Then `options.dilation` passes fill the texels next to filled ones,
+/// each with the mean of its filled neighbours that belong to the chart
+/// nearest its centre (a chart: faces joined by edges whose two ends have
+/// the same texture points in both faces).
 /// Faces with a non-finite texture point, or of no area in the texture, are
 /// skipped; only the first three corners of a face are used (a triangle mesh).
 /// Samples are taken in parallel when CGAL is linked with oneTBB: `sample` must
@@ -123,8 +194,15 @@ Baked_texture bake_texture(const TriangleMesh& tm, TextureMap corner_texture, co
     face_descriptor face;
     int index;
     double x, y;
+    std::int32_t local;  // the face's number in `triangles`
   };
+  // The rasterised faces, in texel coordinates, and the chart (island of
+  // texture coordinates) of each; `owner` is the face a filled texel's value
+  // came from (or, in the gutters, the nearest face of the chart it took).
+  std::vector<std::array<double, 6>> triangles;
+  std::vector<std::int32_t> owner(texels, -1);
   std::vector<Corner> corners;
+  std::vector<face_descriptor> faces_baked;  // by local number
   Baked_texture baked;
   baked.image = Image(S, S, options.background);
   std::vector<unsigned char>& rgb = baked.image.rgb;
@@ -161,12 +239,16 @@ Baked_texture bake_texture(const TriangleMesh& tm, TextureMap corner_texture, co
     if(!finite) continue;
     const double area = (x[1] - x[0]) * (y[2] - y[0]) - (x[2] - x[0]) * (y[1] - y[0]);
     if(!(std::abs(area) > 1e-12)) continue;
-    for(int i = 0; i < 3; ++i) corners.push_back(Corner{f, i, x[i], y[i]});
+    const std::int32_t local = std::int32_t(triangles.size());
+    triangles.push_back({x[0], y[0], x[1], y[1], x[2], y[2]});
+    faces_baked.push_back(f);
+    for(int i = 0; i < 3; ++i) corners.push_back(Corner{f, i, x[i], y[i], local});
     internal::for_each_pixel_in_triangle(x, y, area, S, S, 1e-9, [&](int px, int py, double w0, double w1, double) {
       const std::size_t texel = std::size_t(py) * S + px;
       // A texel on an edge of two faces is taken once.
       if(source[texel] == Texel_source::face) return;
       source[texel] = Texel_source::face;
+      owner[texel] = local;
       face_jobs.push_back(Texel_job{std::uint32_t(texel), f, float(w0), float(w1)});
     });
     if(face_jobs.size() >= batch) flush(face_jobs);
@@ -191,6 +273,7 @@ Baked_texture bake_texture(const TriangleMesh& tm, TextureMap corner_texture, co
         if(d != pin_distance[texel]) return;
         pin_distance[texel] = -1.f;  // taken: an equally near corner (the same vertex in another face) adds nothing
         source[texel] = Texel_source::vertex;
+        owner[texel] = c.local;
         vertex_jobs.push_back(Texel_job{std::uint32_t(texel), c.face, c.index == 0 ? 1.f : 0.f, c.index == 1 ? 1.f : 0.f});
       });
   }
@@ -198,8 +281,11 @@ Baked_texture bake_texture(const TriangleMesh& tm, TextureMap corner_texture, co
   flush(vertex_jobs);
 
   // Dilation: each pass gives every empty texel next to a filled one (8
-  // neighbours) the mean of its filled neighbours as they were before the
-  // pass. Only the texels next to the last pass's are looked at.
+  // neighbours) the mean of its filled neighbours, as they were before the
+  // pass, of the chart nearest its centre. Only the texels next to the last
+  // pass's are looked at.
+  const std::vector<std::int32_t> chart_of_face =
+      options.dilation > 0 ? internal::texture_islands(tm, corner_texture, faces_baked) : std::vector<std::int32_t>();
   auto for_neighbours = [S](std::size_t texel, auto visit) {
     const int px = int(texel % std::size_t(S)), py = int(texel / std::size_t(S));
     for(int dy = -1; dy <= 1; ++dy)
@@ -221,21 +307,39 @@ Baked_texture bake_texture(const TriangleMesh& tm, TextureMap corner_texture, co
         }
       }
   std::vector<std::array<unsigned char, 3>> fill;
+  std::vector<std::int32_t> fill_owner;
   for(int pass = 0; pass < options.dilation && !candidates.empty(); ++pass) {
     fill.resize(candidates.size());
+    fill_owner.resize(candidates.size());
     for(std::size_t i = 0; i < candidates.size(); ++i) {
+      // The nearest face among the neighbours' (ties: the first met), then
+      // the mean of the neighbours of its chart.
+      const double cx = double(candidates[i] % std::size_t(S)) + 0.5, cy = double(candidates[i] / std::size_t(S)) + 0.5;
+      std::int32_t nearest = -1;
+      double least = std::numeric_limits<double>::infinity();
+      for_neighbours(candidates[i], [&](std::size_t m) {
+        if(source[m] == Texel_source::background || owner[m] == nearest) return;
+        const double d = internal::max_norm_distance_to_triangle(cx, cy, triangles[std::size_t(owner[m])]);
+        if(d < least) {
+          least = d;
+          nearest = owner[m];
+        }
+      });
+      const std::int32_t chart = chart_of_face[std::size_t(nearest)];
       double sum[3] = {0., 0., 0.};
       int n = 0;
       for_neighbours(candidates[i], [&](std::size_t m) {
-        if(source[m] == Texel_source::background) return;
+        if(source[m] == Texel_source::background || chart_of_face[std::size_t(owner[m])] != chart) return;
         for(int k = 0; k < 3; ++k) sum[k] += rgb[3 * m + std::size_t(k)];
         ++n;
       });
       for(int k = 0; k < 3; ++k) fill[i][std::size_t(k)] = static_cast<unsigned char>(std::lround(sum[k] / n));
+      fill_owner[i] = nearest;
     }
     next_candidates.clear();
     for(std::size_t i = 0; i < candidates.size(); ++i) {
       source[candidates[i]] = Texel_source::gutter;
+      owner[candidates[i]] = fill_owner[i];
       for(int k = 0; k < 3; ++k) rgb[3 * candidates[i] + std::size_t(k)] = fill[i][std::size_t(k)];
     }
     for(std::size_t texel : candidates)

@@ -10,8 +10,10 @@
 //     3D area (one texel density on every chart)
 //   -> turned by 90 degrees so that all lie wide, or all stand tall, or
 //      none turned: whichever packs densest
-//   -> a gutter of texels around it (bilinear filtering and mipmaps must not
-//      mix two charts' texels)
+//   -> half a gutter of texels on each side of it, so that two charts lie a
+//      whole gutter apart, as UVAtlas counts its gutter (bilinear filtering
+//      must not mix two charts' texels; baking dilates each chart into its
+//      half)
 //   -> the largest density at which every chart fits (with shelves, each
 //      chart's within a tolerance of it), with one of two packers:
 //      - shelves (the default): rows of charts of one height, tallest first,
@@ -76,7 +78,10 @@ enum class Chart_packer {
 /// Options of `pack_charts()`.
 struct Chart_packing_options {
   int resolution = 1024; ///< the texture's width and height in texels
-  int gutter = 2;        ///< texels kept free on each side of a chart
+  /// Texels kept free between two charts (the least distance between them,
+  /// as UVAtlas's gutter): each chart has half of it on each side, so half
+  /// of it also lies between a chart and the texture's edge.
+  int gutter = 2;
   /// Try the charts turned by 90 degrees to lie all wide and all tall as
   /// well as unturned, and keep whichever packs densest.
   bool rotate = true;
@@ -94,8 +99,8 @@ struct Chart_packing_options {
 /// One chart's place in the texture. Texels are counted from the lower left
 /// corner (texture coordinates (0,0)), as OBJ and OpenGL count them.
 struct Packed_chart {
-  int x = 0, y = 0;          ///< lower left texel of the chart's slot (gutters included)
-  int width = 0, height = 0; ///< the slot, in texels, gutters included (0 for a chart of no area)
+  int x = 0, y = 0;          ///< lower left texel of the chart's slot (its half gutters included)
+  int width = 0, height = 0; ///< the slot, in texels, half a gutter on each side included (0 for a chart of no area)
   bool rotated = false;      ///< drawn turned by 90 degrees counter-clockwise
   double extent_u = 0.;      ///< texels the chart is drawn across along u (before turning)
   double extent_v = 0.;      ///< texels the chart is drawn across along v
@@ -121,16 +126,16 @@ struct Chart_packing {
   {
     const Packed_chart& p = charts.at(c);
     const double u = CGAL::to_double(uv.x()), v = CGAL::to_double(uv.y());
-    const double r = resolution;
+    const double r = resolution, half = 0.5 * gutter;
     if(p.rotated)
-      return Point_2((p.x + gutter + (1. - v) * p.extent_v) / r, (p.y + gutter + u * p.extent_u) / r);
-    return Point_2((p.x + gutter + u * p.extent_u) / r, (p.y + gutter + v * p.extent_v) / r);
+      return Point_2((p.x + half + (1. - v) * p.extent_v) / r, (p.y + half + u * p.extent_u) / r);
+    return Point_2((p.x + half + u * p.extent_u) / r, (p.y + half + v * p.extent_v) / r);
   }
 };
 
 namespace internal {
 
-/// Packs rectangles of `sizes` (width, height in texels, gutters included)
+/// Packs rectangles of `sizes` (width, height in texels, half gutters included)
 /// into a square of `resolution`; false if one does not fit.
 inline bool pack_rectangles(int resolution, const std::vector<std::array<int, 2>>& sizes,
                             std::vector<std::array<int, 2>>& at)
@@ -151,8 +156,8 @@ inline bool pack_rectangles(int resolution, const std::vector<std::array<int, 2>
   return true;
 }
 
-/// A chart's place in a shelf packing: its slot (gutters included) and the
-/// size it is drawn at inside it, in texels.
+/// A chart's place in a shelf packing: its slot (half a gutter on each side
+/// included) and the size it is drawn at inside it, in texels.
 struct Shelf_slot {
   int x = 0, y = 0, width = 0, height = 0;
   double drawn_width = 0., drawn_height = 0.;
@@ -179,7 +184,7 @@ inline bool pack_shelves(int resolution, int gutter, double density_tolerance, d
     return sizes[a][0] > sizes[b][0];
   });
   slots.assign(n, Shelf_slot());
-  const double R = resolution, g2 = 2. * gutter;
+  const double R = resolution, g = gutter; // a slot holds its chart and half a gutter on each side
   const double low_density = 1. - density_tolerance, high_density = 1. + density_tolerance;
   const double wider = 1. + aspect_tolerance;
   // A chart of (w, h) drawn at height H: the widths its tolerances allow.
@@ -227,7 +232,7 @@ inline bool pack_shelves(int resolution, int gutter, double density_tolerance, d
       // The row holds it if every chart fits at its least whole width (a
       // slot is at least a texel wide; a narrower chart is drawn narrower).
       const double fewest_texels = (std::max)(1., std::ceil(range[0] - 1e-9));
-      if(sum_least + fewest_texels + g2 * static_cast<double>(row.size() + 1) > R) break;
+      if(sum_least + fewest_texels + g * static_cast<double>(row.size() + 1) > R) break;
       row.push_back(order[j]);
       least.push_back(range[0]);
       most.push_back(range[1]);
@@ -238,7 +243,7 @@ inline bool pack_shelves(int resolution, int gutter, double density_tolerance, d
     if(row.empty()) return false; // the first chart is wider than the texture
     // Widths within their tolerances that end the row at the texture's edge
     // (or as near as the tolerances let them).
-    const double room = R - g2 * static_cast<double>(row.size());
+    const double room = R - g * static_cast<double>(row.size());
     double sum = 0., slack = 0.;
     for(double w : width) sum += w;
     if(sum < room) {
@@ -263,7 +268,7 @@ inline bool pack_shelves(int resolution, int gutter, double density_tolerance, d
       whole[k] = (std::max)(fewest[k], static_cast<int>(std::floor(width[k] + 1e-9)));
       whole_sum += whole[k];
     }
-    const int room_whole = resolution - 2 * gutter * static_cast<int>(row.size());
+    const int room_whole = resolution - gutter * static_cast<int>(row.size());
     const int wanted = (std::min)(room_whole, static_cast<int>(std::floor(sum + 0.5)));
     std::vector<std::size_t> by_remainder(row.size());
     for(std::size_t k = 0; k < row.size(); ++k) by_remainder[k] = k;
@@ -280,14 +285,14 @@ inline bool pack_shelves(int resolution, int gutter, double density_tolerance, d
         --whole[by_remainder[k]];
         --whole_sum;
       }
-    if(y + H + 2 * gutter > resolution) return false;
+    if(y + H + gutter > resolution) return false;
     int x = 0;
     for(std::size_t k = 0; k < row.size(); ++k) {
       Shelf_slot& slot = slots[row[k]];
       slot.x = x;
       slot.y = y;
-      slot.width = whole[k] + 2 * gutter;
-      slot.height = H + 2 * gutter;
+      slot.width = whole[k] + gutter;
+      slot.height = H + gutter;
       const bool own_size = k == 0 && !first_fits;
       // Rounding may not take a chart out of its tolerances: it is drawn
       // within them, inside a slot of whole texels.
@@ -296,7 +301,7 @@ inline bool pack_shelves(int resolution, int gutter, double density_tolerance, d
       x += slot.width;
     }
     if(x > resolution) return false;
-    y += H + 2 * gutter;
+    y += H + gutter;
     next += row.size();
   }
   return true;
@@ -362,8 +367,8 @@ Chart_packing pack_charts(const Uv_atlas<TriangleMesh, Kernel>& atlas, VertexPoi
     std::vector<std::array<int, 2>> sizes;
     sizes.reserve(placed.size());
     for(std::size_t c : placed) {
-      const int w = static_cast<int>(std::ceil(s * extent[c][0])) + 2 * g;
-      const int h = static_cast<int>(std::ceil(s * extent[c][1])) + 2 * g;
+      const int w = static_cast<int>(std::ceil(s * extent[c][0])) + g;
+      const int h = static_cast<int>(std::ceil(s * extent[c][1])) + g;
       sizes.push_back(turned[c] ? std::array<int, 2>{h, w} : std::array<int, 2>{w, h});
     }
     return sizes;
