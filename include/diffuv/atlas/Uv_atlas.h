@@ -187,6 +187,15 @@ public:
   /// The (u,v) of local vertex `local` of chart `c`: O(1).
   const Point_2& uv(std::size_t c, Local_index local) const { return charts_[c]->uv[local]; }
 
+  /// Builds the vertex look-up (`entries()`, the vertex and corner maps)
+  /// now; otherwise the first look-up after the last `add_chart()` builds
+  /// it. After this call, and until the next `add_chart()`, every const
+  /// member function only reads, so several threads may use the atlas at once.
+  void prepare_lookups() const
+  {
+    if(entries_stale_) index_vertices();
+  }
+
   /// Every (chart, local vertex) pair of mesh vertex `v`: one for an interior
   /// vertex, one per chart for a vertex on patch borders, none for a vertex on no chart.
   std::pair<const Entry*, const Entry*> entries(vertex_descriptor v) const
@@ -426,7 +435,8 @@ private:
   }
 
   // Rebuilds the vertex -> (chart, local) entries in compressed rows.
-  // Not thread-safe on the first call after add_chart(); later calls only read.
+  // Not thread-safe on the first call after add_chart() (prepare_lookups()
+  // makes that call on one thread); later calls only read.
   void index_vertices() const
   {
     auto vindex = get(boost::vertex_index, mesh_);
