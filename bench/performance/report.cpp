@@ -119,6 +119,8 @@ std::string tables(const std::vector<Row>& rows, const Options& o)
   out << "\n### (b, d) the whole parameterization from given patches, and CGAL on the same patches (ms)\n\n";
   write_table(out, rows,
               size_columns({stored("patches", "patches"), number("paper (graph, no repair)", "paper_ms"),
+                            with_paren("floor: 4 Boost Dijkstra runs per patch (paper / floor)",
+                                       number("", "floor_ms"), number("", "paper_over_floor", "%.2f")),
                             number("default (fmm + repair)", "default_ms"),
                             joined("same, 4-ary heap: paper / default", number("", "paper_4ary_ms"), " / ",
                                    number("", "default_4ary_ms")),

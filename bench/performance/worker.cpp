@@ -6,7 +6,12 @@
 
 #include "compare/cgal_parameterizers.h"
 
+#include <diffuv/graph/edge_length_map.h>
+#include <diffuv/graph/multi_source_dijkstra.h>
+#include <diffuv/graph/patch_graph.h>
 #include <diffuv/layout/disc_patches.h>
+
+#include <boost/graph/dijkstra_shortest_paths.hpp>
 
 #include <boost/property_map/property_map.hpp>
 
@@ -62,6 +67,65 @@ double per_vertex(long long bytes, long long before, std::size_t V)
 // ---------------------------------------------------------------------------
 // (b) The pipelines, alternating; the automatic patches
 
+/// The floor of the paper's method (issue #20): four plain Dijkstra runs per
+/// patch, Boost's `dijkstra_shortest_paths()` (its 4-ary heap with
+/// decrease-key) from each side, on the same compressed-row graph the
+/// pipeline builds (`Patch_graph`, built before the clock starts), nothing
+/// else: no disc check, no sides, no ratios, no chart. Sum over the patches,
+/// ms, median of `runs`. `max_difference`: the largest difference between
+/// these distances and the library's (`Multi_source_dijkstra`, Fibonacci
+/// heap) on the same graphs, which should be 0.
+double time_dijkstra_floor(const Case& c, int runs, double& max_difference)
+{
+  using Graph = diffuv::Patch_graph<Mesh>::Graph;
+  using Local = diffuv::Patch_graph<Mesh>::vertex_descriptor;
+  const auto lengths = diffuv::edge_length_map(c.mesh, c.mesh.points());
+  auto findex = get(boost::face_index, c.mesh);
+  std::vector<Graph> graphs;
+  std::vector<std::array<std::vector<Local>, 4>> sources;
+  diffuv::Patch_graph<Mesh> builder;
+  for(std::size_t p = 0; p < c.seg.number_of_patches(); ++p) {
+    if(!c.patch_ok[p]) continue;
+    builder.build(c.mesh, c.seg.patch_faces[p],
+                  [&](face_descriptor f) { return f != Mesh::null_face() && c.seg.face_patch[get(findex, f)] == p; },
+                  lengths);
+    const auto sides = builder.local_sides(c.mesh, c.sides[p]);
+    graphs.push_back(builder.graph());
+    sources.push_back({sides.u1, sides.u2, sides.v1, sides.v2});
+  }
+  std::vector<double> distance, reference;
+  auto four_runs = [&](std::size_t k, auto&& after_each) {
+    const Graph& g = graphs[k];
+    distance.resize(num_vertices(g));
+    auto dmap = boost::make_iterator_property_map(distance.begin(), get(boost::vertex_index, g));
+    for(const auto& side : sources[k]) {
+      boost::dijkstra_shortest_paths(g, side.begin(), side.end(), boost::dummy_property_map(), dmap,
+                                     get(&diffuv::Patch_graph<Mesh>::Edge::length, g), get(boost::vertex_index, g),
+                                     std::less<double>(), boost::closed_plus<double>(),
+                                     std::numeric_limits<double>::infinity(), 0., boost::default_dijkstra_visitor());
+      after_each(side);
+    }
+  };
+  max_difference = 0.;
+  for(std::size_t k = 0; k < graphs.size(); ++k) {
+    diffuv::Multi_source_dijkstra<Graph, diffuv::Fibonacci_heap_tag> library(graphs[k]);
+    reference.resize(num_vertices(graphs[k]));
+    auto rmap = boost::make_iterator_property_map(reference.begin(), get(boost::vertex_index, graphs[k]));
+    four_runs(k, [&](const std::vector<Local>& side) {
+      library.run(side, get(&diffuv::Patch_graph<Mesh>::Edge::length, graphs[k]), rmap);
+      for(std::size_t i = 0; i < distance.size(); ++i)
+        max_difference = (std::max)(max_difference, std::abs(distance[i] - reference[i]));
+    });
+  }
+  std::vector<double> times;
+  for(int r = 0; r < runs; ++r) {
+    const auto t0 = Clock::now();
+    for(std::size_t k = 0; k < graphs.size(); ++k) four_runs(k, [](const std::vector<Local>&) {});
+    times.push_back(ms_since(t0));
+  }
+  return median(times);
+}
+
 void measure_pipelines(const Case& c, int runs, const std::string& tag, Row& row)
 {
   const double ElogV = static_cast<double>(c.mesh.number_of_edges()) *
@@ -85,7 +149,13 @@ void measure_pipelines(const Case& c, int runs, const std::string& tag, Row& row
   row.set("default_4ary_ms", median(dflt4));
   row.set("default_2threads_ms", median(dflt2));
   row.set("threads2_speedup", format("%.2f", tp / median(paper2)) + " / " + format("%.2f", td / median(dflt2)));
-  progress(tag + "pipelines: paper " + format("%.2f", tp) + " ms, default " + format("%.2f", td) + " ms");
+  double difference = 0.;
+  const double floor = time_dijkstra_floor(c, runs, difference);
+  row.set("floor_ms", floor);
+  row.set("floor_maxdiff", difference);
+  row.set("paper_over_floor", tp / floor);
+  progress(tag + "pipelines: paper " + format("%.2f", tp) + " ms, default " + format("%.2f", td) +
+           " ms; floor (4 Boost Dijkstra runs per patch) " + format("%.2f", floor) + " ms");
 }
 
 /// The time of the automatic patches (disc_patches() without labels), ms; `patches`: how many.
