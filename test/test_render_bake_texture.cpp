@@ -237,6 +237,50 @@ TEST(BakeTexture, DilationFillsTheGuttersSoBordersDoNotBleed)
   EXPECT_GT(worst_bare, 0.2);
 }
 
+// Charts packed a gutter (2 texels) apart share the texels between them:
+// with one flat colour per chart, every gutter texel holds exactly the
+// colour of a chart baked within the dilation's reach, never a blend of two.
+TEST(BakeTexture, GutterTexelsTakeTheNearestChartsColourOnly)
+{
+  const Mesh& cow = cgal_mesh("cow.off");
+  const Packed_mesh packed = pack_default(cow, 512);
+  const auto corner = diffuv::packed_corner_map(*packed.atlas, packed.packing);
+  const std::size_t charts = packed.atlas->number_of_charts();
+  ASSERT_LT(charts, 200u * 200u);
+  // A colour per chart, all different, whole bytes.
+  const auto colour_of = [](std::size_t c) {
+    return diffuv::Color{static_cast<unsigned char>(28 + c % 200), static_cast<unsigned char>(28 + c / 200), 90};
+  };
+  const auto sampler = [&](Mesh::Face_index f, const std::array<double, 3>&) {
+    const diffuv::Color k = colour_of(packed.atlas->chart_of(f));
+    return diffuv::Rgb{k.r / 255., k.g / 255., k.b / 255.};
+  };
+  diffuv::Bake_options options;
+  options.size = 512;
+  options.dilation = 2;
+  const diffuv::Baked_texture baked = diffuv::bake_texture(cow, corner, sampler, options);
+  ASSERT_GT(baked.gutter_texels, 1000u);
+  const int S = 512;
+  std::size_t checked = 0;
+  for(int y = 0; y < S; ++y)
+    for(int x = 0; x < S; ++x) {
+      if(baked.source[std::size_t(y) * S + x] != diffuv::Texel_source::gutter) continue;
+      const diffuv::Color got = baked.image.at(x, y);
+      bool near = false;  // a texel of the chart of that colour within two texels
+      for(int dy = -2; dy <= 2 && !near; ++dy)
+        for(int dx = -2; dx <= 2 && !near; ++dx) {
+          const int nx = x + dx, ny = y + dy;
+          if(nx < 0 || ny < 0 || nx >= S || ny >= S) continue;
+          const auto s = baked.source[std::size_t(ny) * S + nx];
+          near = (s == diffuv::Texel_source::face || s == diffuv::Texel_source::vertex) && baked.image.at(nx, ny) == got;
+        }
+      ASSERT_TRUE(near) << "gutter texel (" << x << ", " << y << ") holds " << int(got.r) << " " << int(got.g) << " "
+                        << int(got.b) << ", no chart's colour";
+      ++checked;
+    }
+  EXPECT_EQ(checked, baked.gutter_texels);
+}
+
 // The dilation's two helpers. The max-norm distance to a triangle against a
 // brute force over a fine grid of the triangle's points (never below it, and
 // within the grid's step of it); the texture's islands of cow's packed atlas

@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <memory>
 #include <limits>
@@ -152,6 +153,27 @@ TEST(PackCharts, CowChartsShareOneTextureWithoutOverlap)
     EXPECT_LE(p.extent_u + 2 * g, (p.rotated ? p.height : p.width) + 1e-9);
     EXPECT_LE(p.extent_v + 2 * g, (p.rotated ? p.width : p.height) + 1e-9);
   }
+  // The gutter lies between two charts, not on each side of each: the
+  // charts' drawn rectangles are at least a gutter apart, and the nearest
+  // two (neighbours in a row, both filling their slots) exactly a gutter;
+  // the charts that start a row lie half a gutter from the texture's edge.
+  double nearest_pair = std::numeric_limits<double>::infinity(), nearest_edge = nearest_pair;
+  const auto drawn = [&](std::size_t c) {
+    const auto& p = packing.charts[c];
+    const double w = p.rotated ? p.extent_v : p.extent_u, h = p.rotated ? p.extent_u : p.extent_v;
+    return std::array<double, 4>{p.x + g, p.y + g, p.x + g + w, p.y + g + h};
+  };
+  for(std::size_t a = 0; a < packing.charts.size(); ++a) {
+    const auto A = drawn(a);
+    nearest_edge = std::min({nearest_edge, A[0], A[1]});
+    for(std::size_t b = a + 1; b < packing.charts.size(); ++b) {
+      const auto B = drawn(b);
+      nearest_pair = std::min(nearest_pair, std::max({B[0] - A[2], A[0] - B[2], B[1] - A[3], A[1] - B[3]}));
+    }
+  }
+  EXPECT_GE(nearest_pair, options.gutter - 1e-9);
+  EXPECT_LE(nearest_pair, options.gutter + 1e-6);
+  EXPECT_NEAR(nearest_edge, 0.5 * options.gutter, 1e-9);
   // One way of turning for all charts: none, the tall ones or the wide ones.
   std::set<int> turned_kinds;
   for(std::size_t c = 0; c < atlas.number_of_charts(); ++c) {

@@ -26,6 +26,7 @@
 #include <memory>
 #include <sstream>
 #include <string>
+#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -159,9 +160,13 @@ void run_param(const Param_options& options)
     return png.str();
   };
   std::future<std::string> picture_png;
-  if(outputs.picture && threads != 1) {
+  if(outputs.picture && options.threads != 1) {
     atlas.prepare_lookups(); // the atlas's lazy vertex index, built before two threads read it
-    picture_png = std::async(std::launch::async, make_picture);
+    try {
+      picture_png = std::async(std::launch::async, make_picture);
+    } catch(const std::system_error&) {
+      // No thread to be had: the picture is made below, after the other files.
+    }
   }
   // The texture of the OBJ and the glTF file. Packed: squares of 16 texels
   // of the packed texture, the same size on every chart; stacked: 8 x 8

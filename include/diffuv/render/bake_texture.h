@@ -111,26 +111,29 @@ inline double max_norm_distance_to_triangle(double x, double y, const std::array
   return least;
 }
 
-/// The charts of `faces` under `corner_texture`: two faces sharing an edge
+/// The charts of `baked_faces` under `corner_texture`: two faces sharing an edge
 /// are in one chart when both ends of the edge have the same texture point
-/// in both. Returns a chart number per entry of `faces` (the smallest entry
+/// in both. Returns a chart number per entry of `baked_faces` (the smallest entry
 /// number of its chart).
 template <class TriangleMesh, class TextureMap, class FaceDescriptor>
 std::vector<std::int32_t> texture_islands(const TriangleMesh& tm, TextureMap corner_texture,
-                                          const std::vector<FaceDescriptor>& faces)
+                                          const std::vector<FaceDescriptor>& baked_faces)
 {
   const auto findex = get(boost::face_index, tm);
-  std::vector<std::int32_t> local(num_faces(tm), -1), parent(faces.size());
-  for(std::size_t k = 0; k < faces.size(); ++k) {
-    local[std::size_t(get(findex, faces[k]))] = std::int32_t(k);
+  // Indices may run past num_faces() (a Surface_mesh with removed faces not yet collected).
+  std::size_t indices = 0;
+  for(auto f : faces(tm)) indices = (std::max)(indices, std::size_t(get(findex, f)) + 1);
+  std::vector<std::int32_t> local(indices, -1), parent(baked_faces.size());
+  for(std::size_t k = 0; k < baked_faces.size(); ++k) {
+    local[std::size_t(get(findex, baked_faces[k]))] = std::int32_t(k);
     parent[k] = std::int32_t(k);
   }
   const auto find = [&](std::int32_t a) {
     while(parent[std::size_t(a)] != a) a = parent[std::size_t(a)] = parent[std::size_t(parent[std::size_t(a)])];
     return a;
   };
-  for(std::size_t k = 0; k < faces.size(); ++k)
-    for(auto h : CGAL::halfedges_around_face(halfedge(faces[k], tm), tm)) {
+  for(std::size_t k = 0; k < baked_faces.size(); ++k)
+    for(auto h : CGAL::halfedges_around_face(halfedge(baked_faces[k], tm), tm)) {
       const auto g = opposite(h, tm);
       if(is_border(g, tm)) continue;
       const std::int32_t other = local[std::size_t(get(findex, face(g, tm)))];
@@ -142,8 +145,8 @@ std::vector<std::int32_t> texture_islands(const TriangleMesh& tm, TextureMap cor
       const std::int32_t a = find(std::int32_t(k)), b = find(other);
       if(a != b) parent[std::size_t((std::max)(a, b))] = (std::min)(a, b);
     }
-  std::vector<std::int32_t> chart(faces.size());
-  for(std::size_t k = 0; k < faces.size(); ++k) chart[k] = find(std::int32_t(k));
+  std::vector<std::int32_t> chart(baked_faces.size());
+  for(std::size_t k = 0; k < baked_faces.size(); ++k) chart[k] = find(std::int32_t(k));
   return chart;
 }
 
@@ -256,14 +259,16 @@ Baked_texture bake_texture(const TriangleMesh& tm, TextureMap corner_texture, co
   flush(face_jobs);
   if(options.pin_vertices) {
     // The bilinear footprint of a point: the texels whose centres are the
-    // corners of the texel-sized square around it. A texel in two
-    // footprints goes to the nearer point.
+    // corners of the texel-sized square around it, less those a whole texel
+    // away along an axis (weight 0 in its read: with a 1-texel gutter such a
+    // texel can be the next chart's). A texel in two footprints goes to the
+    // nearer point.
     std::vector<float> pin_distance(texels, std::numeric_limits<float>::infinity());
     auto footprint = [&](const Corner& c, auto visit) {
       const int bx = int(std::floor(c.x - 0.5)), by = int(std::floor(c.y - 0.5));
       for(int py = by; py <= by + 1; ++py)
         for(int px = bx; px <= bx + 1; ++px)
-          if(px >= 0 && py >= 0 && px < S && py < S)
+          if(px >= 0 && py >= 0 && px < S && py < S && std::abs(px + 0.5 - c.x) < 1. && std::abs(py + 0.5 - c.y) < 1.)
             visit(std::size_t(py) * S + px, float(std::hypot(px + 0.5 - c.x, py + 0.5 - c.y)));
     };
     for(const Corner& c : corners)
