@@ -5,6 +5,7 @@
 
 #include <diffuv/core/error.h>
 #include <diffuv/core/four_sides.h>
+#include <diffuv/internal/index_marks.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -199,8 +200,24 @@ std::size_t separate_flat_triangles(const FaceGraph& g,
 {
   using vertex_descriptor = typename boost::graph_traits<FaceGraph>::vertex_descriptor;
   const std::size_t n = loop.size();
-  std::map<vertex_descriptor, std::size_t> position;
-  for(std::size_t i = 0; i < n; ++i) position.emplace(loop[i], i);
+  // Loop positions and searches by vertex index, in tables kept per thread
+  // from one call to the next so that a call is O(patch): std::maps here were
+  // a fifth of the paper's method on man's 1,096 patches (doc/performance.md).
+  const auto vindex = get(boost::vertex_index, g);
+  thread_local internal::Index_marks on_loop, met;
+  thread_local std::vector<std::size_t> position_of, search_of;
+  const std::size_t nv = num_vertices(g);
+  on_loop.reset(nv);
+  met.reset(nv);
+  if(position_of.size() < nv) {
+    position_of.resize(nv);
+    search_of.resize(nv);
+  }
+  for(std::size_t i = 0; i < n; ++i) {
+    const std::size_t vi = get(vindex, loop[i]);
+    if(on_loop.insert(vi)) position_of[vi] = i;
+  }
+  auto position = [&](vertex_descriptor v) { return on_loop.contains(get(vindex, v)) ? position_of[get(vindex, v)] : n; };
 
   // The sets of border positions that must not lie on one side: the faces
   // with three border vertices, and the links of interior vertices whose
@@ -210,13 +227,14 @@ std::size_t separate_flat_triangles(const FaceGraph& g,
   for(std::size_t i = 0; i < n; ++i)
     for(auto h : CGAL::halfedges_around_target(halfedge(loop[i], g), g)) {
       if(is_border(h, g) || !in_patch(face(h, g))) continue;
-      std::vector<std::size_t> t;
+      std::array<std::size_t, 3> t{};
+      std::size_t on_border = 0;
       for(vertex_descriptor v : CGAL::vertices_around_face(h, g)) {
-        const auto it = position.find(v);
-        if(it == position.end()) inner.push_back(v);
-        else t.push_back(it->second);
+        const std::size_t at = position(v);
+        if(at == n) inner.push_back(v);
+        else if(on_border < 3) t[on_border++] = at;
       }
-      if(t.size() == 3) border_sets.push_back(t);
+      if(on_border == 3) border_sets.emplace_back(t.begin(), t.end());
     }
   // The interior vertices next to the border, grouped into connected
   // components across interior edges: a convex combination map puts a whole
@@ -228,11 +246,14 @@ std::size_t separate_flat_triangles(const FaceGraph& g,
   std::sort(inner.begin(), inner.end());
   inner.erase(std::unique(inner.begin(), inner.end()), inner.end());
   const std::size_t max_component = std::max<std::size_t>(n, 64);
-  std::map<vertex_descriptor, std::size_t> seen;  // interior vertex -> the search that met it
+  std::vector<std::size_t> attached;
+  std::vector<vertex_descriptor> stack;
   for(std::size_t k = 0; k < inner.size(); ++k) {
-    if(!seen.emplace(inner[k], k).second) continue;
-    std::vector<std::size_t> attached;
-    std::vector<vertex_descriptor> stack = {inner[k]};
+    // search_of[v]: the search that met interior vertex v first
+    if(!met.insert(get(vindex, inner[k]))) continue;
+    search_of[get(vindex, inner[k])] = k;
+    attached.clear();
+    stack.assign(1, inner[k]);
     std::size_t size = 1;
     // A search stopped early leaves its component unfinished: meeting one of
     // its vertices means this is the same large component.
@@ -242,16 +263,17 @@ std::size_t separate_flat_triangles(const FaceGraph& g,
       stack.pop_back();
       for(auto h : CGAL::halfedges_around_target(halfedge(v, g), g)) {
         const vertex_descriptor w = source(h, g);
-        const auto it = position.find(w);
-        if(it != position.end()) {
-          attached.push_back(it->second);
+        const std::size_t at = position(w);
+        if(at != n) {
+          attached.push_back(at);
           continue;
         }
-        const auto met = seen.emplace(w, k);
-        if(met.second) {
+        const std::size_t wi = get(vindex, w);
+        if(met.insert(wi)) {
+          search_of[wi] = k;
           stack.push_back(w);
           large = ++size > max_component;
-        } else if(met.first->second != k) {
+        } else if(search_of[wi] != k) {
           large = true;
         }
       }
