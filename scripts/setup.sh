@@ -14,6 +14,7 @@ packages=(
   libcli11-dev                         # the diffuv command line
   libstb-dev                           # stb_image_write and stb_rect_pack: PNG textures, renders, the packed atlas
   libtinygltf-dev                      # glTF 2.0 files (the textured mesh for three.js, Blender, game engines)
+  zlib1g-dev                           # the checker texture as an indexed PNG, deflated row by row
   pkg-config libcpp-httplib-dev        # diffuv serve: the painter's local web server (found through pkg-config)
   nlohmann-json3-dev                   # diffuv serve: the JSON of its API
   libjs-three                          # the painter page's 3D view (three.js, served by diffuv serve)

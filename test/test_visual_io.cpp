@@ -31,6 +31,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <random>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -242,6 +243,82 @@ TEST_F(VisualIo, CheckerTextureAlternatesWithAGrid)
   EXPECT_EQ(diffuv::checker_texture(100, 3).size(), 100u * 100u * 3u);
   EXPECT_THROW(diffuv::checker_texture(4, 0), std::invalid_argument);
   EXPECT_THROW(diffuv::checker_texture(4, 5), std::invalid_argument);
+}
+
+// Decodes a PNG held in memory with stb_image as RGB: (width, height, channels in the file, pixels).
+struct Decoded_png {
+  int width = 0, height = 0, channels = 0;
+  std::vector<unsigned char> rgb;
+};
+Decoded_png decode_png(const std::string& bytes)
+{
+  Decoded_png d;
+  unsigned char* data = stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()), static_cast<int>(bytes.size()),
+                                              &d.width, &d.height, &d.channels, 3);
+  if(data == nullptr) {
+    ADD_FAILURE() << stbi_failure_reason();
+    return d;
+  }
+  d.rgb.assign(data, data + static_cast<std::size_t>(d.width) * d.height * 3);
+  stbi_image_free(data);
+  return d;
+}
+
+TEST(IndexedPng, CheckerPngHoldsTheCheckerTexturesPixels)
+{
+  // Cells that divide the size and cells that do not, one cell, one pixel per cell,
+  // and the size diffuv param writes (1024 pixels, squares of 16).
+  for(const auto& [size, cells] : std::vector<std::pair<int, int>>{{1024, 64}, {512, 8}, {100, 3}, {33, 33}, {7, 1}, {1, 1}}) {
+    std::ostringstream out;
+    ASSERT_TRUE(diffuv::write_checker_png(out, size, cells));
+    const Decoded_png back = decode_png(out.str());
+    EXPECT_EQ(back.width, size);
+    EXPECT_EQ(back.height, size);
+    EXPECT_EQ(back.rgb, diffuv::checker_texture(size, cells)) << size << " pixels, " << cells << " cells";
+  }
+  std::ostringstream out;
+  EXPECT_THROW(diffuv::write_checker_png(out, 4, 5), std::invalid_argument);
+  EXPECT_THROW(diffuv::write_checker_png(out, 4, 0), std::invalid_argument);
+  EXPECT_TRUE(out.str().empty()); // nothing written before the arguments are checked
+}
+
+TEST(IndexedPng, EveryBitDepthRoundTripsThroughStbImage)
+{
+  // Palettes needing 1, 2, 4 and 8 bits; a width that is not a multiple of 8
+  // (the last byte of each row is partly padding); random indices, rows
+  // repeated now and then (a repeated row is packed once).
+  std::mt19937 random(7);
+  const int w = 37, h = 23;
+  for(std::size_t colours : {1u, 2u, 3u, 4u, 5u, 16u, 17u, 256u}) {
+    std::vector<diffuv::Color> palette;
+    for(std::size_t i = 0; i < colours; ++i)
+      palette.push_back({static_cast<unsigned char>(random() % 256), static_cast<unsigned char>(random() % 256),
+                         static_cast<unsigned char>(random() % 256)});
+    std::vector<std::vector<unsigned char>> rows(h, std::vector<unsigned char>(w));
+    for(int y = 0; y < h; ++y)
+      for(int x = 0; x < w; ++x) rows[y][x] = y % 5 == 4 ? rows[y - 1][x] : static_cast<unsigned char>(random() % colours);
+    std::ostringstream out;
+    ASSERT_TRUE(diffuv::write_indexed_png(out, w, h, palette, [&](int y, unsigned char* indices) {
+      std::copy(rows[y].begin(), rows[y].end(), indices);
+    }));
+    const Decoded_png back = decode_png(out.str());
+    ASSERT_EQ(back.width, w);
+    ASSERT_EQ(back.height, h);
+    for(int y = 0; y < h; ++y)
+      for(int x = 0; x < w; ++x) {
+        const unsigned char* p = &back.rgb[3 * (static_cast<std::size_t>(y) * w + x)];
+        ASSERT_EQ((diffuv::Color{p[0], p[1], p[2]}), palette[rows[y][x]]) << colours << " colours, pixel " << x << ", " << y;
+      }
+  }
+  // Bad arguments: no colours, too many, an index beyond the palette, no pixels.
+  std::ostringstream out;
+  auto zeros = [](int, unsigned char* indices) { std::fill(indices, indices + 4, 0); };
+  EXPECT_THROW(diffuv::write_indexed_png(out, 4, 4, {}, zeros), std::invalid_argument);
+  EXPECT_THROW(diffuv::write_indexed_png(out, 4, 4, std::vector<diffuv::Color>(257), zeros), std::invalid_argument);
+  EXPECT_THROW(diffuv::write_indexed_png(out, 0, 4, std::vector<diffuv::Color>(2), zeros), std::invalid_argument);
+  EXPECT_THROW(diffuv::write_indexed_png(out, 4, 4, std::vector<diffuv::Color>(2),
+                                         [](int y, unsigned char* indices) { std::fill(indices, indices + 4, y == 2 ? 2 : 1); }),
+               std::invalid_argument);
 }
 
 TEST_F(VisualIo, PngRoundTripThroughStbImage)

@@ -25,6 +25,7 @@
 #include <iostream>
 #include <memory>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <system_error>
 #include <thread>
@@ -175,7 +176,8 @@ void run_param(const Param_options& options)
   if(outputs.obj || outputs.glb) {
     // Packed: the texture itself, --texture-size texels wide; stacked: 512.
     const int size = packed ? options.texture_size : 512;
-    diffuv::write_png(checker_png, size, size, diffuv::checker_texture(size, packed ? std::max(1, size / 16) : 8));
+    if(!diffuv::write_checker_png(checker_png, size, packed ? std::max(1, size / 16) : 8))
+      throw std::runtime_error("the checker texture could not be encoded (zlib ran out of memory)");
   }
   auto write_textured = [&](auto corner_uv) {
     if(outputs.obj) {
@@ -187,7 +189,9 @@ void run_param(const Param_options& options)
       out.open(texture) << checker_png.str();
     }
     if(outputs.glb) {
-      // The same, as one self-contained glTF 2.0 file (three.js, Blender, game engines).
+      // The same, as one self-contained glTF 2.0 file (three.js, Blender, game
+      // engines). On this thread: encoded on a second one while the OBJ was
+      // written, it took longer (doc/performance.md).
       diffuv::Gltf_options gltf;
       gltf.png = checker_png.str();
       gltf.name = std::filesystem::path(in.path).stem().string();

@@ -7,7 +7,8 @@
 // `write_png_file("checker.png", ...)` give a textured OBJ that any viewer
 // (MeshLab, Blender) opens.
 //
-// PNG encoding uses stb_image_write (Debian package libstb-dev), compiled into
+// Indexed PNGs of a few colours (the checker) are deflated by zlib (Debian
+// package zlib1g-dev) row by row; RGB ones use stb_image_write (libstb-dev), compiled into
 // every translation unit that includes this header as static functions, so
 // that no separate implementation file is needed and two headers of diffuv
 // using it (see render/) can share one copy through the same guard.
@@ -38,7 +39,10 @@
 #pragma GCC diagnostic pop
 #endif
 
+#include <zlib.h>
+
 #include <cstddef>
+#include <cstdint>
 #include <ostream>
 #include <stdexcept>
 #include <string>
@@ -53,6 +57,47 @@ struct Checker_colors {
   static constexpr Color grid = {20, 20, 20};     ///< the lines between cells and around the image
 };
 
+namespace internal {
+
+// The checkerboard's geometry along one axis (the image is square): each
+// pixel column's cell, and whether it lies on a grid line. One definition for
+// the RGB image and the indexed PNG, so that both show the same pixels.
+class Checker_axis {
+public:
+  Checker_axis(int size, int cells) : cell_(static_cast<std::size_t>(size)), on_line_(static_cast<std::size_t>(size))
+  {
+    if(cells < 1 || size < cells)
+      throw std::invalid_argument("checker_texture: need 1 <= cells <= size (cells " + std::to_string(cells) +
+                                  ", size " + std::to_string(size) + ")");
+    const int line = size / 512 > 1 ? size / 512 : 1;
+    for(int x = 0; x < size; ++x) {
+      const int k = static_cast<int>(static_cast<long long>(x) * cells / size);
+      const int begin = static_cast<int>((static_cast<long long>(k) * size + cells - 1) / cells); // first column of cell k
+      const int end = static_cast<int>((static_cast<long long>(k + 1) * size + cells - 1) / cells); // one past its last
+      cell_[static_cast<std::size_t>(x)] = k;
+      on_line_[static_cast<std::size_t>(x)] = (x - begin < line || end - 1 - x < line) ? 1 : 0;
+    }
+  }
+  /// 0 for a light cell, 1 for a dark one, 2 for the grid: the palette of `checker_palette()`.
+  unsigned char index(int x, int y) const
+  {
+    const auto X = static_cast<std::size_t>(x), Y = static_cast<std::size_t>(y);
+    if(on_line_[X] || on_line_[Y]) return 2;
+    return static_cast<unsigned char>((cell_[X] + cell_[Y]) % 2);
+  }
+
+private:
+  std::vector<int> cell_;
+  std::vector<char> on_line_;
+};
+
+inline std::vector<Color> checker_palette()
+{
+  return {Checker_colors::light, Checker_colors::dark, Checker_colors::grid};
+}
+
+} // namespace internal
+
 /// Returns a checkerboard image: `size` x `size` RGB pixels, `cells` x `cells`
 /// cells of alternating `Checker_colors::light` and `Checker_colors::dark`,
 /// with a thin `Checker_colors::grid` line along every cell border.
@@ -63,6 +108,7 @@ struct Checker_colors {
 /// by at most one pixel when `cells` does not divide `size`. A grid line is
 /// `max(1, size / 512)` pixels wide on each side of a cell border, so it is
 /// one pixel on the image's own border and two between cells at 512 pixels.
+/// `write_checker_png()` writes the same pixels without holding the image.
 ///
 /// \param size the width and height in pixels
 /// \param cells the number of cells along each side
@@ -70,25 +116,12 @@ struct Checker_colors {
 /// \throws std::invalid_argument unless `1 <= cells` and `cells <= size`
 inline std::vector<unsigned char> checker_texture(int size = 512, int cells = 8)
 {
-  if(cells < 1 || size < cells)
-    throw std::invalid_argument("checker_texture: need 1 <= cells <= size (cells " + std::to_string(cells) +
-                                ", size " + std::to_string(size) + ")");
-  const int line = size / 512 > 1 ? size / 512 : 1;
-  // Per column (and row, the image is square): its cell, and whether it is on a grid line.
-  std::vector<int> cell(size);
-  std::vector<char> on_line(size);
-  for(int x = 0; x < size; ++x) {
-    const int k = static_cast<int>(static_cast<long long>(x) * cells / size);
-    const int begin = static_cast<int>((static_cast<long long>(k) * size + cells - 1) / cells); // first column of cell k
-    const int end = static_cast<int>((static_cast<long long>(k + 1) * size + cells - 1) / cells); // one past its last
-    cell[x] = k;
-    on_line[x] = (x - begin < line || end - 1 - x < line) ? 1 : 0;
-  }
+  const internal::Checker_axis axis(size, cells);
+  const std::vector<Color> palette = internal::checker_palette();
   std::vector<unsigned char> rgb(static_cast<std::size_t>(size) * size * 3);
   for(int y = 0; y < size; ++y)
     for(int x = 0; x < size; ++x) {
-      const Color& c = (on_line[x] || on_line[y]) ? Checker_colors::grid
-                       : ((cell[x] + cell[y]) % 2 == 0 ? Checker_colors::light : Checker_colors::dark);
+      const Color& c = palette[axis.index(x, y)];
       unsigned char* p = &rgb[3 * (static_cast<std::size_t>(y) * size + x)];
       p[0] = c.r;
       p[1] = c.g;
@@ -154,6 +187,123 @@ inline void write_png_file(const std::string& path, int width, int height, const
   if(!write_png(file.stream(), width, height, rgb))
     throw Output_error(path, "PNG encoding failed");
   file.commit();
+}
+
+namespace internal {
+
+inline void png_be32(std::string& s, std::uint32_t v)
+{
+  for(int shift = 24; shift >= 0; shift -= 8) s.push_back(static_cast<char>((v >> shift) & 0xffu));
+}
+
+// One PNG chunk: length, type, data, and the CRC of type and data.
+inline void png_chunk(std::ostream& out, const char* type, const std::string& data)
+{
+  std::string bytes;
+  png_be32(bytes, static_cast<std::uint32_t>(data.size()));
+  bytes.append(type, 4);
+  bytes += data;
+  std::string crc;
+  png_be32(crc, static_cast<std::uint32_t>(
+                    crc32(0, reinterpret_cast<const Bytef*>(bytes.data()) + 4, static_cast<uInt>(bytes.size() - 4))));
+  out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  out.write(crc.data(), 4);
+}
+
+} // namespace internal
+
+/// Writes an image of palette indices as an indexed-colour PNG (colour type 3,
+/// 1, 2, 4 or 8 bits per pixel, the fewest the palette needs), streamed row by
+/// row through zlib: the image is never held whole. Every PNG reader expands
+/// it to the palette's RGB colours.
+///
+/// Why: a texture of a few colours (the checker of `diffuv param`'s OBJ and
+/// glb) then costs a row's memory and a fraction of the data to compress.
+/// The 1024 x 1024 checker as RGB through stb took 11-15 ms to encode and
+/// 10 ms more to fill (doc/performance.md); indexed, it takes about 2 ms.
+///
+/// \tparam RowIndices callable as `row(y, indices)`: fills `indices[0 .. width)`
+///         with the palette indices of row y (rows from the top)
+/// \param out the stream (opened in binary mode if it is a file)
+/// \param width, height the size in pixels
+/// \param palette 1 to 256 colours
+/// \returns whether zlib compressed the image (it fails only when out of
+///          memory); the stream's state tells whether writing succeeded
+/// \throws std::invalid_argument if a size is not positive, the palette is
+///         empty or longer than 256, or a row holds an index beyond it
+template <class RowIndices>
+bool write_indexed_png(std::ostream& out, int width, int height, const std::vector<Color>& palette, RowIndices row)
+{
+  if(width <= 0 || height <= 0) throw std::invalid_argument("write_indexed_png: the image size must be positive");
+  if(palette.empty() || palette.size() > 256)
+    throw std::invalid_argument("write_indexed_png: " + std::to_string(palette.size()) + " colours (need 1 to 256)");
+  const int depth = palette.size() <= 2 ? 1 : palette.size() <= 4 ? 2 : palette.size() <= 16 ? 4 : 8;
+  const std::size_t w = static_cast<std::size_t>(width);
+  const std::size_t packed_bytes = (w * static_cast<std::size_t>(depth) + 7) / 8;
+
+  static const char signature[8] = {'\x89', 'P', 'N', 'G', '\r', '\n', '\x1a', '\n'};
+  out.write(signature, 8);
+  std::string header;
+  internal::png_be32(header, static_cast<std::uint32_t>(width));
+  internal::png_be32(header, static_cast<std::uint32_t>(height));
+  header += {static_cast<char>(depth), 3, 0, 0, 0}; // indexed colour, deflate, no filter method, no interlace
+  internal::png_chunk(out, "IHDR", header);
+  std::string colours;
+  for(const Color& c : palette) colours += {static_cast<char>(c.r), static_cast<char>(c.g), static_cast<char>(c.b)};
+  internal::png_chunk(out, "PLTE", colours);
+
+  // Deflate level 2, rows unfiltered (filter byte 0), as write_png().
+  z_stream z{};
+  if(deflateInit(&z, 2) != Z_OK) return false;
+  std::vector<unsigned char> indices(w), previous(w), packed(packed_bytes + 1, 0), chunk(1 << 16);
+  std::string compressed;
+  bool ok = true;
+  for(int y = 0; y < height && ok; ++y) {
+    row(y, indices.data());
+    if(y == 0 || indices != previous) { // a repeated row is packed once (a checker has three kinds)
+      std::fill(packed.begin(), packed.end(), 0);
+      for(std::size_t x = 0; x < w; ++x) {
+        if(indices[x] >= palette.size()) {
+          deflateEnd(&z);
+          throw std::invalid_argument("write_indexed_png: index " + std::to_string(indices[x]) + " at pixel (" +
+                                      std::to_string(x) + ", " + std::to_string(y) + ") beyond a palette of " +
+                                      std::to_string(palette.size()));
+        }
+        const std::size_t bit = x * static_cast<std::size_t>(depth);
+        packed[1 + bit / 8] |= static_cast<unsigned char>(indices[x] << (8 - depth - static_cast<int>(bit % 8)));
+      }
+      previous.swap(indices);
+    }
+    z.next_in = packed.data();
+    z.avail_in = static_cast<uInt>(packed.size());
+    const int flush = y + 1 == height ? Z_FINISH : Z_NO_FLUSH;
+    do {
+      z.next_out = chunk.data();
+      z.avail_out = static_cast<uInt>(chunk.size());
+      const int status = deflate(&z, flush);
+      ok = status == Z_OK || status == Z_STREAM_END || status == Z_BUF_ERROR;
+      compressed.append(reinterpret_cast<const char*>(chunk.data()), chunk.size() - z.avail_out);
+    } while(ok && z.avail_out == 0);
+  }
+  deflateEnd(&z);
+  if(!ok) return false;
+  internal::png_chunk(out, "IDAT", compressed);
+  internal::png_chunk(out, "IEND", std::string());
+  return true;
+}
+
+/// Writes `checker_texture(size, cells)` as an indexed PNG (three colours, 2
+/// bits per pixel) without making the RGB image: what `diffuv param` writes
+/// beside its OBJ and into its glb.
+///
+/// \returns whether the image was encoded (see `write_indexed_png()`)
+/// \throws std::invalid_argument unless `1 <= cells` and `cells <= size`
+inline bool write_checker_png(std::ostream& out, int size = 512, int cells = 8)
+{
+  const internal::Checker_axis axis(size, cells);
+  return write_indexed_png(out, size, size, internal::checker_palette(), [&](int y, unsigned char* indices) {
+    for(int x = 0; x < size; ++x) indices[x] = axis.index(x, y);
+  });
 }
 
 } // namespace diffuv
