@@ -120,42 +120,30 @@ void write_obj(std::ostream& out,
     face_sizes.push_back(size);
   }
 
-  if(!mtllib.empty())
-    out << "mtllib " << mtllib << '\n';
+  internal::Text_writer text(out);
+  if(!mtllib.empty()) text.put("mtllib ").put(mtllib).put('\n');
 
   // Shortest exact form: input coordinates come back as they were written.
   for(vertex_descriptor v : vertices(tm)) {
     const auto& p = get(vpm, v);
-    out << "v ";
-    internal::write_shortest(out, CGAL::to_double(p.x()));
-    out << ' ';
-    internal::write_shortest(out, CGAL::to_double(p.y()));
-    out << ' ';
-    internal::write_shortest(out, CGAL::to_double(p.z()));
-    out << '\n';
+    text.put("v ").number(CGAL::to_double(p.x())).put(' ').number(CGAL::to_double(p.y())).put(' ');
+    text.number(CGAL::to_double(p.z())).put('\n');
   }
-  for(const auto& [u, v] : vt) {
-    out << "vt ";
-    internal::write_shortest(out, u);
-    out << ' ';
-    internal::write_shortest(out, v);
-    out << '\n';
-  }
+  for(const auto& [u, v] : vt) text.put("vt ").number(u).put(' ').number(v).put('\n');
 
-  if(!material.empty())
-    out << "usemtl " << material << '\n';
+  if(!material.empty()) text.put("usemtl ").put(material).put('\n');
 
   std::size_t c = 0;
   for(std::size_t size : face_sizes) {
     // A face with a corner without uv is written without texture coordinates.
     bool textured = true;
     for(std::size_t k = 0; k < size; ++k) textured = textured && corners[c + 2 * k + 1] != no_vt;
-    out << 'f';
+    text.put('f');
     for(std::size_t k = 0; k < size; ++k, c += 2) {
-      out << ' ' << corners[c] + 1;
-      if(textured) out << '/' << corners[c + 1] + 1;
+      text.put(' ').number(corners[c] + 1);
+      if(textured) text.put('/').number(corners[c + 1] + 1);
     }
-    out << '\n';
+    text.put('\n');
   }
 }
 

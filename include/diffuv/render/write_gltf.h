@@ -122,8 +122,9 @@ bool write_glb(std::ostream& out, const TriangleMesh& tm, VertexPointMap vpm, Co
   // Area-weighted vertex normals: the sum of the (unnormalised) cross
   // products of the triangles of each face's fan.
   std::vector<std::array<double, 3>> normal(number.size(), {0., 0., 0.});
+  std::vector<vertex_descriptor> corner;  // of one face; reused, as the vectors below
   for(face_descriptor f : faces(tm)) {
-    std::vector<vertex_descriptor> corner;
+    corner.clear();
     for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, tm), tm)) corner.push_back(target(h, tm));
     std::array<double, 3> n{0., 0., 0.};
     const auto a = point(corner[0]);
@@ -164,17 +165,19 @@ bool write_glb(std::ostream& out, const TriangleMesh& tm, VertexPointMap vpm, Co
     known[i].push_back(Known{s, t, index, textured});
     return index;
   };
+  std::vector<std::pair<vertex_descriptor, std::array<double, 2>>> corner_uvs;
+  std::vector<std::uint32_t> index;
   for(face_descriptor f : faces(tm)) {
-    std::vector<std::pair<vertex_descriptor, std::array<double, 2>>> corner;
+    corner_uvs.clear();
     bool textured = true;
     for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, tm), tm)) {
       const auto uv = get(corner_uv, h);
       const double u = CGAL::to_double(uv.x()), v = CGAL::to_double(uv.y());
       textured = textured && std::isfinite(u) && std::isfinite(v);
-      corner.push_back({target(h, tm), {u, v}});
+      corner_uvs.push_back({target(h, tm), {u, v}});
     }
-    std::vector<std::uint32_t> index;
-    for(const auto& [v, uv] : corner)
+    index.clear();
+    for(const auto& [v, uv] : corner_uvs)
       index.push_back(textured ? glTF_vertex(v, true, static_cast<float>(uv[0]), static_cast<float>(1. - uv[1]))
                                : glTF_vertex(v, false, 0.f, 0.f));
     auto& indices = textured ? textured_indices : plain_indices;
