@@ -173,16 +173,13 @@ struct Shelf_slot {
 /// least widths; then the widths are grown or shrunk within the same
 /// tolerances so that the row ends at the texture's edge, and rounded to
 /// whole texels. False if the rows do not fit.
+/// `order`: the charts as the rows take them, `shelf_order(sizes)` (the same
+/// at every density, so a caller that tries many densities sorts once).
 inline bool pack_shelves(int resolution, int gutter, double density_tolerance, double aspect_tolerance,
-                         const std::vector<std::array<double, 2>>& sizes, std::vector<Shelf_slot>& slots)
+                         const std::vector<std::array<double, 2>>& sizes, const std::vector<std::size_t>& order,
+                         std::vector<Shelf_slot>& slots)
 {
   const std::size_t n = sizes.size();
-  std::vector<std::size_t> order(n);
-  for(std::size_t k = 0; k < n; ++k) order[k] = k;
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    if(sizes[a][1] != sizes[b][1]) return sizes[a][1] > sizes[b][1];
-    return sizes[a][0] > sizes[b][0];
-  });
   slots.assign(n, Shelf_slot());
   const double R = resolution, g = gutter; // a slot holds its chart and half a gutter on each side
   const double low_density = 1. - density_tolerance, high_density = 1. + density_tolerance;
@@ -307,6 +304,25 @@ inline bool pack_shelves(int resolution, int gutter, double density_tolerance, d
   return true;
 }
 
+/// The order in which `pack_shelves()` takes charts: the tallest first, then
+/// the widest, then by number.
+inline std::vector<std::size_t> shelf_order(const std::vector<std::array<double, 2>>& sizes)
+{
+  std::vector<std::size_t> order(sizes.size());
+  for(std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    if(sizes[a][1] != sizes[b][1]) return sizes[a][1] > sizes[b][1];
+    return sizes[a][0] > sizes[b][0];
+  });
+  return order;
+}
+
+inline bool pack_shelves(int resolution, int gutter, double density_tolerance, double aspect_tolerance,
+                         const std::vector<std::array<double, 2>>& sizes, std::vector<Shelf_slot>& slots)
+{
+  return pack_shelves(resolution, gutter, density_tolerance, aspect_tolerance, sizes, shelf_order(sizes), slots);
+}
+
 } // namespace internal
 
 /// Packs the charts of `atlas` into one square texture (see the top of this
@@ -376,15 +392,23 @@ Chart_packing pack_charts(const Uv_atlas<TriangleMesh, Kernel>& atlas, VertexPoi
   const bool shelves = options.packer == Chart_packer::shelves;
   std::vector<std::array<int, 2>> at;
   std::vector<internal::Shelf_slot> shelf_slots;
+  // The charts' sizes at density s, as they lie; for shelves, the order in
+  // which rows take them, the same at every density (set for each way of
+  // turning below): sorting it at each of the densities tried was half of
+  // the packing's time.
+  std::vector<std::array<double, 2>> shelf_sizes;
+  std::vector<std::size_t> row_order;
+  const auto sizes_at = [&](double s) {
+    shelf_sizes.clear();
+    for(std::size_t c : placed)
+      shelf_sizes.push_back(turned[c] ? std::array<double, 2>{s * extent[c][1], s * extent[c][0]}
+                                      : std::array<double, 2>{s * extent[c][0], s * extent[c][1]});
+  };
   const auto fits = [&](double s) {
     if(shelves) {
-      std::vector<std::array<double, 2>> sizes;
-      sizes.reserve(placed.size());
-      for(std::size_t c : placed)
-        sizes.push_back(turned[c] ? std::array<double, 2>{s * extent[c][1], s * extent[c][0]}
-                                  : std::array<double, 2>{s * extent[c][0], s * extent[c][1]});
+      sizes_at(s);
       return internal::pack_shelves(options.resolution, g, options.density_tolerance, options.aspect_tolerance,
-                                    sizes, shelf_slots);
+                                    shelf_sizes, row_order, shelf_slots);
     }
     const auto sizes = slot_sizes(s);
     for(const auto& size : sizes)
@@ -415,6 +439,10 @@ Chart_packing pack_charts(const Uv_atlas<TriangleMesh, Kernel>& atlas, VertexPoi
   };
   for(int policy = 0; policy < (options.rotate ? 3 : 1); ++policy) {
     turn(policy);
+    if(shelves) {
+      sizes_at(1.);
+      row_order = internal::shelf_order(shelf_sizes);
+    }
     double lo = 0., hi = bound;
     Found here;
     const auto keep = [&](double s) {
