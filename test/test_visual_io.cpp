@@ -26,7 +26,10 @@
 #pragma GCC diagnostic pop
 
 #include <gtest/gtest.h>
+#include <zlib.h>
 
+#include <algorithm>
+#include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -310,7 +313,8 @@ TEST(IndexedPng, EveryBitDepthRoundTripsThroughStbImage)
         ASSERT_EQ((diffuv::Color{p[0], p[1], p[2]}), palette[rows[y][x]]) << colours << " colours, pixel " << x << ", " << y;
       }
   }
-  // Bad arguments: no colours, too many, an index beyond the palette, no pixels.
+  // Bad arguments: no colours, too many, an index beyond the palette, no
+  // pixels; a callback that throws. Nothing is written in any of them.
   std::ostringstream out;
   auto zeros = [](int, unsigned char* indices) { std::fill(indices, indices + 4, 0); };
   EXPECT_THROW(diffuv::write_indexed_png(out, 4, 4, {}, zeros), std::invalid_argument);
@@ -319,6 +323,64 @@ TEST(IndexedPng, EveryBitDepthRoundTripsThroughStbImage)
   EXPECT_THROW(diffuv::write_indexed_png(out, 4, 4, std::vector<diffuv::Color>(2),
                                          [](int y, unsigned char* indices) { std::fill(indices, indices + 4, y == 2 ? 2 : 1); }),
                std::invalid_argument);
+  EXPECT_THROW(diffuv::write_indexed_png(out, 4, 4, std::vector<diffuv::Color>(2),
+                                         [](int y, unsigned char*) { if(y == 3) throw std::runtime_error("row 3"); }),
+               std::runtime_error);
+  EXPECT_TRUE(out.str().empty());
+}
+
+// stb_image checks neither the chunks' CRCs nor zlib's checksum: walk the
+// file's chunks, check each CRC, and inflate the IDAT data with zlib into the
+// expected rows (filter byte 0, indices packed from the high bits). The image
+// is random and 8-bit, so its compressed data spans several IDAT chunks.
+TEST(IndexedPng, ChunksCarryTheirCrcsAndTheRowsInflateExactly)
+{
+  std::mt19937 random(11);
+  const int w = 600, h = 600;
+  std::vector<diffuv::Color> palette(256);
+  for(std::size_t i = 0; i < palette.size(); ++i) palette[i] = {static_cast<unsigned char>(i), 0, static_cast<unsigned char>(255 - i)};
+  std::vector<unsigned char> indices(static_cast<std::size_t>(w) * h);
+  for(auto& i : indices) i = static_cast<unsigned char>(random() % 256);
+  std::ostringstream out;
+  ASSERT_TRUE(diffuv::write_indexed_png(out, w, h, palette, [&](int y, unsigned char* row) {
+    std::copy(indices.begin() + static_cast<std::ptrdiff_t>(y) * w, indices.begin() + static_cast<std::ptrdiff_t>(y + 1) * w, row);
+  }));
+  const std::string png = out.str();
+  ASSERT_GT(png.size(), 8u);
+  EXPECT_EQ(png.substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8));
+  auto be32 = [&](std::size_t at) {
+    return (static_cast<std::uint32_t>(static_cast<unsigned char>(png[at])) << 24) |
+           (static_cast<std::uint32_t>(static_cast<unsigned char>(png[at + 1])) << 16) |
+           (static_cast<std::uint32_t>(static_cast<unsigned char>(png[at + 2])) << 8) |
+           static_cast<std::uint32_t>(static_cast<unsigned char>(png[at + 3]));
+  };
+  std::vector<std::string> types;
+  std::string idat;
+  for(std::size_t at = 8; at < png.size();) {
+    ASSERT_LE(at + 12, png.size());
+    const std::size_t length = be32(at);
+    ASSERT_LE(at + 12 + length, png.size());
+    const std::string type = png.substr(at + 4, 4);
+    const uLong crc = crc32(0, reinterpret_cast<const Bytef*>(png.data() + at + 4), static_cast<uInt>(4 + length));
+    EXPECT_EQ(be32(at + 8 + length), static_cast<std::uint32_t>(crc)) << "CRC of chunk " << types.size() << " (" << type << ")";
+    if(type == "IDAT") idat += png.substr(at + 8, length);
+    types.push_back(type);
+    at += 12 + length;
+  }
+  ASSERT_GE(types.size(), 5u);
+  EXPECT_EQ(types.front(), "IHDR");
+  EXPECT_EQ(types[1], "PLTE");
+  EXPECT_EQ(types.back(), "IEND");
+  EXPECT_GT(std::count(types.begin(), types.end(), "IDAT"), 1); // 360 KB of random indices: several 64 KB blocks
+  std::vector<unsigned char> rows(static_cast<std::size_t>(w + 1) * h + 1);
+  uLongf size = static_cast<uLongf>(rows.size());
+  ASSERT_EQ(uncompress(rows.data(), &size, reinterpret_cast<const Bytef*>(idat.data()), static_cast<uLong>(idat.size())), Z_OK);
+  ASSERT_EQ(size, static_cast<uLongf>(w + 1) * h);
+  for(int y = 0; y < h; ++y) {
+    const unsigned char* r = &rows[static_cast<std::size_t>(y) * (w + 1)];
+    ASSERT_EQ(r[0], 0) << "filter byte of row " << y;
+    ASSERT_TRUE(std::equal(r + 1, r + 1 + w, indices.begin() + static_cast<std::ptrdiff_t>(y) * w)) << "row " << y;
+  }
 }
 
 TEST_F(VisualIo, PngRoundTripThroughStbImage)

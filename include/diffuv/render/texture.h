@@ -196,26 +196,37 @@ inline void png_be32(std::string& s, std::uint32_t v)
   for(int shift = 24; shift >= 0; shift -= 8) s.push_back(static_cast<char>((v >> shift) & 0xffu));
 }
 
-// One PNG chunk: length, type, data, and the CRC of type and data.
-inline void png_chunk(std::ostream& out, const char* type, const std::string& data)
+// Appends one PNG chunk to png: length, type, data, and the CRC of type and data.
+inline void png_chunk(std::string& png, const char* type, const char* data, std::size_t size)
 {
-  std::string bytes;
-  png_be32(bytes, static_cast<std::uint32_t>(data.size()));
-  bytes.append(type, 4);
-  bytes += data;
-  std::string crc;
-  png_be32(crc, static_cast<std::uint32_t>(
-                    crc32(0, reinterpret_cast<const Bytef*>(bytes.data()) + 4, static_cast<uInt>(bytes.size() - 4))));
-  out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-  out.write(crc.data(), 4);
+  png_be32(png, static_cast<std::uint32_t>(size));
+  png.append(type, 4);
+  png.append(data, size);
+  uLong crc = crc32(0, reinterpret_cast<const Bytef*>(type), 4);
+  crc = crc32(crc, reinterpret_cast<const Bytef*>(data), static_cast<uInt>(size));
+  png_be32(png, static_cast<std::uint32_t>(crc));
 }
+
+// A zlib deflate stream, ended on every way out.
+struct Deflate_stream {
+  z_stream z{};
+  bool live = false;
+  explicit Deflate_stream(int level) { live = deflateInit(&z, level) == Z_OK; }
+  ~Deflate_stream()
+  {
+    if(live) deflateEnd(&z);
+  }
+  Deflate_stream(const Deflate_stream&) = delete;
+  Deflate_stream& operator=(const Deflate_stream&) = delete;
+};
 
 } // namespace internal
 
 /// Writes an image of palette indices as an indexed-colour PNG (colour type 3,
 /// 1, 2, 4 or 8 bits per pixel, the fewest the palette needs), streamed row by
-/// row through zlib: the image is never held whole. Every PNG reader expands
-/// it to the palette's RGB colours.
+/// row through zlib: the image is never held whole, only its compressed
+/// bytes, written to `out` at the end. Every PNG reader expands it to the
+/// palette's RGB colours.
 ///
 /// Why: a texture of a few colours (the checker of `diffuv param`'s OBJ and
 /// glb) then costs a row's memory and a fraction of the data to compress.
@@ -228,9 +239,11 @@ inline void png_chunk(std::ostream& out, const char* type, const std::string& da
 /// \param width, height the size in pixels
 /// \param palette 1 to 256 colours
 /// \returns whether zlib compressed the image (it fails only when out of
-///          memory); the stream's state tells whether writing succeeded
+///          memory; nothing is written then); the stream's state tells
+///          whether writing succeeded
 /// \throws std::invalid_argument if a size is not positive, the palette is
 ///         empty or longer than 256, or a row holds an index beyond it
+///         (nothing is written); what `row` throws, likewise
 template <class RowIndices>
 bool write_indexed_png(std::ostream& out, int width, int height, const std::vector<Color>& palette, RowIndices row)
 {
@@ -241,34 +254,33 @@ bool write_indexed_png(std::ostream& out, int width, int height, const std::vect
   const std::size_t w = static_cast<std::size_t>(width);
   const std::size_t packed_bytes = (w * static_cast<std::size_t>(depth) + 7) / 8;
 
-  static const char signature[8] = {'\x89', 'P', 'N', 'G', '\r', '\n', '\x1a', '\n'};
-  out.write(signature, 8);
+  // The whole file is made in memory (a few KB for a checker) and written
+  // at the end, so a bad index or a throwing callback leaves `out` untouched.
+  std::string png("\x89PNG\r\n\x1a\n", 8);
   std::string header;
   internal::png_be32(header, static_cast<std::uint32_t>(width));
   internal::png_be32(header, static_cast<std::uint32_t>(height));
   header += {static_cast<char>(depth), 3, 0, 0, 0}; // indexed colour, deflate, no filter method, no interlace
-  internal::png_chunk(out, "IHDR", header);
+  internal::png_chunk(png, "IHDR", header.data(), header.size());
   std::string colours;
   for(const Color& c : palette) colours += {static_cast<char>(c.r), static_cast<char>(c.g), static_cast<char>(c.b)};
-  internal::png_chunk(out, "PLTE", colours);
+  internal::png_chunk(png, "PLTE", colours.data(), colours.size());
 
-  // Deflate level 2, rows unfiltered (filter byte 0), as write_png().
-  z_stream z{};
-  if(deflateInit(&z, 2) != Z_OK) return false;
-  std::vector<unsigned char> indices(w), previous(w), packed(packed_bytes + 1, 0), chunk(1 << 16);
-  std::string compressed;
-  bool ok = true;
-  for(int y = 0; y < height && ok; ++y) {
+  // Deflate level 2, rows unfiltered (filter byte 0), as write_png(); an
+  // IDAT chunk each time 64 KB of compressed data are ready.
+  internal::Deflate_stream stream(2);
+  if(!stream.live) return false;
+  z_stream& z = stream.z;
+  std::vector<unsigned char> indices(w), previous(w), packed(packed_bytes + 1, 0), block(1 << 16);
+  for(int y = 0; y < height; ++y) {
     row(y, indices.data());
     if(y == 0 || indices != previous) { // a repeated row is packed once (a checker has three kinds)
       std::fill(packed.begin(), packed.end(), 0);
       for(std::size_t x = 0; x < w; ++x) {
-        if(indices[x] >= palette.size()) {
-          deflateEnd(&z);
+        if(indices[x] >= palette.size())
           throw std::invalid_argument("write_indexed_png: index " + std::to_string(indices[x]) + " at pixel (" +
                                       std::to_string(x) + ", " + std::to_string(y) + ") beyond a palette of " +
                                       std::to_string(palette.size()));
-        }
         const std::size_t bit = x * static_cast<std::size_t>(depth);
         packed[1 + bit / 8] |= static_cast<unsigned char>(indices[x] << (8 - depth - static_cast<int>(bit % 8)));
       }
@@ -278,17 +290,16 @@ bool write_indexed_png(std::ostream& out, int width, int height, const std::vect
     z.avail_in = static_cast<uInt>(packed.size());
     const int flush = y + 1 == height ? Z_FINISH : Z_NO_FLUSH;
     do {
-      z.next_out = chunk.data();
-      z.avail_out = static_cast<uInt>(chunk.size());
+      z.next_out = block.data();
+      z.avail_out = static_cast<uInt>(block.size());
       const int status = deflate(&z, flush);
-      ok = status == Z_OK || status == Z_STREAM_END || status == Z_BUF_ERROR;
-      compressed.append(reinterpret_cast<const char*>(chunk.data()), chunk.size() - z.avail_out);
-    } while(ok && z.avail_out == 0);
+      if(status != Z_OK && status != Z_STREAM_END && status != Z_BUF_ERROR) return false;
+      const std::size_t made = block.size() - z.avail_out;
+      if(made > 0) internal::png_chunk(png, "IDAT", reinterpret_cast<const char*>(block.data()), made);
+    } while(z.avail_out == 0);
   }
-  deflateEnd(&z);
-  if(!ok) return false;
-  internal::png_chunk(out, "IDAT", compressed);
-  internal::png_chunk(out, "IEND", std::string());
+  internal::png_chunk(png, "IEND", "", 0);
+  out.write(png.data(), static_cast<std::streamsize>(png.size()));
   return true;
 }
 
