@@ -4,6 +4,7 @@
 
 #include <charconv>
 #include <cstddef>
+#include <exception>
 #include <ostream>
 #include <string>
 #include <string_view>
@@ -26,8 +27,20 @@ inline void write_shortest(std::ostream& out, double x)
 /// took about as long as mapping man (doc/performance.md).
 class Text_writer {
 public:
-  explicit Text_writer(std::ostream& out) : out_(out) { text_.reserve(block + 64); }
-  ~Text_writer() { flush(); }
+  explicit Text_writer(std::ostream& out) : out_(out), exceptions_(std::uncaught_exceptions())
+  {
+    text_.reserve(block + 64);
+  }
+  /// Call `flush()` at the end: this flushes only on a normal way out, and
+  /// swallows what a stream with exceptions enabled would throw.
+  ~Text_writer()
+  {
+    if(std::uncaught_exceptions() != exceptions_) return; // unwinding: the text is unfinished anyway
+    try {
+      flush();
+    } catch(...) {
+    }
+  }
   Text_writer(const Text_writer&) = delete;
   Text_writer& operator=(const Text_writer&) = delete;
 
@@ -71,6 +84,7 @@ private:
   }
   std::ostream& out_;
   std::string text_;
+  int exceptions_;
 };
 
 } // namespace internal

@@ -145,6 +145,7 @@ void write_obj(std::ostream& out,
     }
     text.put('\n');
   }
+  text.flush();
 }
 
 /// Same as above, into the file `path`, through `Atomic_output_file`: on

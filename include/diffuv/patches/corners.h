@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <map>
 #include <string>
@@ -204,8 +205,9 @@ std::size_t separate_flat_triangles(const FaceGraph& g,
   // from one call to the next so that a call is O(patch): std::maps here were
   // a fifth of the paper's method on man's 1,096 patches (doc/performance.md).
   const auto vindex = get(boost::vertex_index, g);
+  // (4 bytes per entry: 16 bytes per vertex of the largest mesh seen, per thread.)
   thread_local internal::Index_marks on_loop, met;
-  thread_local std::vector<std::size_t> position_of, search_of;
+  thread_local std::vector<std::uint32_t> position_of, search_of;
   const std::size_t nv = num_vertices(g);
   on_loop.reset(nv);
   met.reset(nv);
@@ -215,7 +217,7 @@ std::size_t separate_flat_triangles(const FaceGraph& g,
   }
   for(std::size_t i = 0; i < n; ++i) {
     const std::size_t vi = get(vindex, loop[i]);
-    if(on_loop.insert(vi)) position_of[vi] = i;
+    if(on_loop.insert(vi)) position_of[vi] = static_cast<std::uint32_t>(i);
   }
   auto position = [&](vertex_descriptor v) { return on_loop.contains(get(vindex, v)) ? position_of[get(vindex, v)] : n; };
 
@@ -251,7 +253,7 @@ std::size_t separate_flat_triangles(const FaceGraph& g,
   for(std::size_t k = 0; k < inner.size(); ++k) {
     // search_of[v]: the search that met interior vertex v first
     if(!met.insert(get(vindex, inner[k]))) continue;
-    search_of[get(vindex, inner[k])] = k;
+    search_of[get(vindex, inner[k])] = static_cast<std::uint32_t>(k);
     attached.clear();
     stack.assign(1, inner[k]);
     std::size_t size = 1;
@@ -270,10 +272,10 @@ std::size_t separate_flat_triangles(const FaceGraph& g,
         }
         const std::size_t wi = get(vindex, w);
         if(met.insert(wi)) {
-          search_of[wi] = k;
+          search_of[wi] = static_cast<std::uint32_t>(k);
           stack.push_back(w);
           large = ++size > max_component;
-        } else if(search_of[wi] != k) {
+        } else if(search_of[wi] != static_cast<std::uint32_t>(k)) {
           large = true;
         }
       }
