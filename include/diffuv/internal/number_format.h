@@ -12,13 +12,16 @@
 namespace diffuv {
 namespace internal {
 
-/// Writes `x` in the shortest form that reads back to the same double
-/// (0.3346 stays 0.3346, where 17 significant digits would print 0.33460000000000001).
+/// Formats `x` into `buffer` in the shortest form that reads back to the same
+/// double (0.3346 stays 0.3346, where 17 significant digits would print
+/// 0.33460000000000001); returns one past the last character.
+inline char* format_shortest(char (&buffer)[32], double x) { return std::to_chars(buffer, buffer + sizeof(buffer), x).ptr; }
+
+/// Writes `x` in that shortest form.
 inline void write_shortest(std::ostream& out, double x)
 {
   char buffer[32];
-  const auto result = std::to_chars(buffer, buffer + sizeof(buffer), x);
-  out.write(buffer, result.ptr - buffer);
+  out.write(buffer, format_shortest(buffer, x) - buffer);
 }
 
 /// Text made in memory and handed to a stream in blocks of 64 KB: one
@@ -58,8 +61,7 @@ public:
   Text_writer& number(double x)
   {
     char buffer[32];
-    const auto result = std::to_chars(buffer, buffer + sizeof(buffer), x);
-    text_.append(buffer, static_cast<std::size_t>(result.ptr - buffer));
+    text_.append(buffer, static_cast<std::size_t>(format_shortest(buffer, x) - buffer));
     return full();
   }
   Text_writer& number(std::size_t n)

@@ -219,7 +219,10 @@ std::size_t separate_flat_triangles(const FaceGraph& g,
     const std::size_t vi = get(vindex, loop[i]);
     if(on_loop.insert(vi)) position_of[vi] = static_cast<std::uint32_t>(i);
   }
-  auto position = [&](vertex_descriptor v) { return on_loop.contains(get(vindex, v)) ? position_of[get(vindex, v)] : n; };
+  auto position = [&](vertex_descriptor v) {
+    const std::size_t vi = get(vindex, v);
+    return on_loop.contains(vi) ? std::size_t(position_of[vi]) : n;
+  };
 
   // The sets of border positions that must not lie on one side: the faces
   // with three border vertices, and the links of interior vertices whose
@@ -234,7 +237,7 @@ std::size_t separate_flat_triangles(const FaceGraph& g,
       for(vertex_descriptor v : CGAL::vertices_around_face(h, g)) {
         const std::size_t at = position(v);
         if(at == n) inner.push_back(v);
-        else if(on_border < 3) t[on_border++] = at;
+        else if(on_border++ < 3) t[on_border - 1] = at;
       }
       if(on_border == 3) border_sets.emplace_back(t.begin(), t.end());
     }
