@@ -656,8 +656,8 @@ TEST(QuadLayout, EstimatedCornerChoicesKeepTheSearchHonest)
   EXPECT_GT(set_few, 0u);
   EXPECT_LE(set_few, set_all);
   diffuv::Uv_atlas<Mesh> before(cow), after(cow);
-  const auto by_rule = diffuv::parameterize_patches(cow, cow.points(), rule, before);
-  const auto by_few = diffuv::parameterize_patches(cow, cow.points(), few, after);
+  const auto by_rule = diffuv::parameterize_patches(cow, cow.points(), rule, before, as_the_layout_maps());
+  const auto by_few = diffuv::parameterize_patches(cow, cow.points(), few, after, as_the_layout_maps());
   for(std::size_t p = 0; p < rule.number_of_patches(); ++p) {
     if(rule.corners(p) || !few.corners(p)) continue;
     ASSERT_TRUE(by_rule[p].status.ok() && by_few[p].status.ok()) << p;
@@ -706,7 +706,7 @@ diffuv::Distortion_summary refined_atlas_quality(const Mesh& m, const std::vecto
   EXPECT_TRUE(diffuv::diffusion_patches(m, m.points(), labels, seg, options).ok());
   diffuv::Uv_atlas<Mesh> atlas(m);
   diffuv::Distortion_summary total;
-  for(const auto& r : diffuv::parameterize_patches(m, m.points(), seg, atlas)) {
+  for(const auto& r : diffuv::parameterize_patches(m, m.points(), seg, atlas, as_the_layout_maps())) {
     EXPECT_TRUE(r.status.ok()) << r.status.what();
     if(r.status)
       total = diffuv::combined(total, diffuv::measure_distortion(m, m.points(), atlas.chart(r.chart).faces,

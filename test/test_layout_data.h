@@ -111,12 +111,22 @@ Seg automatic_layout(const Mesh& m, diffuv::Patching_report* report = nullptr)
   return seg;
 }
 
-// Each patch of `seg` mapped by the default pipeline and measured on its
-// chart (an empty summary where the patch could not be mapped, which fails).
+// The default mapping, its charts drawn on plain rectangles (no warps), as
+// the layout's own searches and judge map patches: tests of the layout's
+// choices measure them by the layout's own yardstick.
+inline diffuv::Patch_parameterization_options as_the_layout_maps()
+{
+  diffuv::Patch_parameterization_options options;
+  options.drawing.pieces = 0;
+  return options;
+}
+
+// Each patch of `seg` mapped as the layout maps it and measured on its chart
+// (an empty summary where the patch could not be mapped, which fails).
 std::vector<diffuv::Distortion_summary> map_each_patch(const Mesh& m, const Seg& seg)
 {
   diffuv::Uv_atlas<Mesh> atlas(m);
-  const auto results = diffuv::parameterize_patches(m, m.points(), seg, atlas);
+  const auto results = diffuv::parameterize_patches(m, m.points(), seg, atlas, as_the_layout_maps());
   std::vector<diffuv::Distortion_summary> d(results.size());
   for(std::size_t p = 0; p < results.size(); ++p) {
     EXPECT_TRUE(results[p].status.ok()) << p;

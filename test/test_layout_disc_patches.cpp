@@ -275,7 +275,10 @@ TEST(DiscPatches, ADiscIsLaidOutWhenOneSquareWouldNotServeIt)
   };
   auto atlas_quality = [](const Mesh& m, const diffuv::Segmentation<Mesh>& seg) {
     diffuv::Uv_atlas<Mesh> atlas(m);
-    const auto results = diffuv::parameterize_patches(m, m.points(), seg, atlas);
+    // Charts on plain rectangles, as the judge that laid the disc out sees them.
+    diffuv::Patch_parameterization_options unwarped;
+    unwarped.drawing.pieces = 0;
+    const auto results = diffuv::parameterize_patches(m, m.points(), seg, atlas, unwarped);
     diffuv::Distortion_summary total;
     Quality q;
     for(const auto& r : results) {

@@ -215,15 +215,25 @@ TEST(BakeTexture, DilationFillsTheGuttersSoBordersDoNotBleed)
     if(distance[i] > 2) ASSERT_EQ(baked.image.at(int(i) % S, int(i) / S), (diffuv::Color{0, 0, 0}));
   }
 
-  // Border edges of the charts: their two faces are in different charts (or one is the mesh's border).
+  // Border edges of the charts: their two faces are in different charts (or
+  // one is the mesh's border). A triangle thinner than a texel across its
+  // border edge holds no texel centre near it, whatever the dilation (a
+  // warped chart squeezes triangles with little 3D area that thin): only
+  // edges of triangles at least a texel thick are read.
   double worst_dilated = 0., worst_bare = 0.;
-  std::size_t edges = 0;
+  std::size_t edges = 0, thin = 0;
   for(std::size_t c = 0; c < packed.atlas->number_of_charts(); ++c)
     for(auto f : packed.atlas->chart(c).faces)
       for(auto h : CGAL::halfedges_around_face(cow.halfedge(f), cow)) {
         const auto g = cow.opposite(h);
         if(!cow.is_border(g) && packed.atlas->chart_of(cow.face(g)) == packed.atlas->chart_of(f)) continue;
-        const auto a = get(corner, h), b = get(corner, cow.prev(h));
+        const auto a = get(corner, h), b = get(corner, cow.prev(h)), o = get(corner, cow.next(h));
+        const double length = std::hypot(a.x() - b.x(), a.y() - b.y()) * S;
+        const double twice_area = std::abs((b.x() - a.x()) * (o.y() - a.y()) - (o.x() - a.x()) * (b.y() - a.y())) * S * S;
+        if(!(twice_area >= length)) { // thinner than a texel across the edge
+          ++thin;
+          continue;
+        }
         const double s = 0.5 * (a.x() + b.x()), t = 0.5 * (a.y() + b.y());
         diffuv::Rgb expected;
         for(int k = 0; k < 3; ++k)
@@ -233,6 +243,7 @@ TEST(BakeTexture, DilationFillsTheGuttersSoBordersDoNotBleed)
         ++edges;
       }
   EXPECT_GT(edges, 100u);
+  EXPECT_LT(thin, edges / 20);
   EXPECT_LT(worst_dilated, 0.06) << "a chart's border reads the background";
   EXPECT_GT(worst_bare, 0.2);
 }

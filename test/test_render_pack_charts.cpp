@@ -237,8 +237,9 @@ TEST(PackCharts, TurningKeepsOrientationAndShape)
 }
 
 // The shelves never mirror a chart and map it affinely: every packed
-// triangle keeps its orientation, and its area over its area on the unit
-// square is one number per chart (the drawn rectangle's, in texels).
+// triangle keeps its orientation, and its area over its area as drawn on
+// the unit square (warped) is one number per chart (the drawn rectangle's,
+// in texels).
 TEST(PackCharts, ShelvesKeepOrientationAndOneScalePerChart)
 {
   const Mesh& cow = cgal_mesh("cow.off");
@@ -246,7 +247,7 @@ TEST(PackCharts, ShelvesKeepOrientationAndOneScalePerChart)
   const Atlas& atlas = *mapped.atlas;
   const diffuv::Chart_packing packing = diffuv::pack_charts(atlas, cow.points());
   const auto packed = diffuv::packed_corner_map(atlas, packing);
-  const auto square = atlas.corner_uv_map();
+  const auto square = atlas.corner_drawn_uv_map();
   const double r = packing.resolution;
   std::size_t turned = 0;
   for(std::size_t c = 0; c < atlas.number_of_charts(); ++c) {

@@ -64,6 +64,7 @@
 #include <diffuv/layout/voronoi_discs.h>
 
 #include <diffuv/atlas/Uv_atlas.h>
+#include <diffuv/atlas/axis_warp.h>
 
 #include <diffuv/metrics/distortion.h>
 #include <diffuv/metrics/texture_use.h>

@@ -211,7 +211,9 @@ void run_bake(Bake_cli_options& o)
   const std::size_t cores = (std::max)(1u, std::thread::hardware_concurrency());
   Patch_cli_options patching = options.patches;
   patching.threads = options.threads == 0 ? 0 : (std::min)(options.threads, cores);
-  Parameterization result = parameterize_by_patches(in, patching, options.distance, repair, patching.threads);
+  diffuv::Chart_drawing_options drawing;
+  drawing.pieces = static_cast<std::size_t>(options.warp_pieces);
+  Parameterization result = parameterize_by_patches(in, patching, options.distance, repair, patching.threads, drawing);
   std::size_t failed = 0;
   for(const auto& p : result.patches) failed += p.status ? 0 : 1;
   if(failed == result.patches.size())
@@ -324,6 +326,9 @@ void add_bake_command(CLI::App& app)
                   "place): each texel's point on MESH takes the data at its closest point on this mesh");
   cmd->add_option("--resolution,--texture-size", p.texture_size, "Width and height of the texture in texels")
       ->check(number_in(16, 8192))
+      ->capture_default_str();
+  cmd->add_option("--warp-pieces", p.warp_pieces, "As in param: the pieces of each chart's warps of u and v (0: none)")
+      ->check(CLI::Range(0, 64))
       ->capture_default_str();
   cmd->add_option("--gutter", p.gutter, "Texels kept free between two packed charts (half of it at the texture's edge)")
       ->check(number_in(0, 256))

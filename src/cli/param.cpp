@@ -87,6 +87,8 @@ void run_param(const Param_options& options)
   std::vector<double> times;
   diffuv::Repair_options repair;
   repair.enabled = !options.no_repair;
+  diffuv::Chart_drawing_options drawing;
+  drawing.pieces = static_cast<std::size_t>(options.warp_pieces);
   // More threads than cores gain nothing, and oneTBB would warn about them.
   const std::size_t cores = (std::max)(1u, std::thread::hardware_concurrency());
   const std::size_t threads = options.threads == 0 ? 0 : (std::min)(options.threads, cores);
@@ -94,8 +96,8 @@ void run_param(const Param_options& options)
   patching.threads = threads;
   for(int run = 0; run < options.runs; ++run) {
     result = options.corners.empty()
-                 ? parameterize_by_patches(in, patching, options.distance, repair, threads)
-                 : parameterize_with_corners(in, corners, options.corners, options.distance, repair);
+                 ? parameterize_by_patches(in, patching, options.distance, repair, threads, drawing)
+                 : parameterize_with_corners(in, corners, options.corners, options.distance, repair, drawing);
     times.push_back(result.milliseconds);
   }
   stages.add("patches", result.patches_ms, count_text(result.seg.number_of_patches(), "patch", "patches"));
@@ -259,6 +261,12 @@ void add_common_options(CLI::App* cmd, Param_options& o)
   cmd->add_flag("--no-repair", o.no_repair,
                 "Keep the raw diffusion coordinates, folds included (the paper's method). By default every fold is "
                 "repaired: the folded region is re-solved as a convex-combination map (see doc/quality.md)");
+  cmd->add_option("--warp-pieces", o.warp_pieces,
+                  "Each chart is drawn on its rectangle with u and v warped by increasing piecewise-linear maps of "
+                  "this many pieces, fitted to lower the chart's stretch (its iso-lines and border kept; see "
+                  "doc/layout.md, \"Charts drawn with warped axes\"); 0 draws each chart's (u,v) on its plain rectangle")
+      ->check(CLI::Range(0, 64))
+      ->capture_default_str();
   CLI::Option* view = cmd->add_option("--view", o.view, "View of the picture: front, back, left, right, top or iso")
       ->check(CLI::IsMember({"front", "back", "left", "right", "top", "iso"}))
       ->capture_default_str();

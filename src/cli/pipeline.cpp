@@ -28,7 +28,7 @@ bool is_corner_problem(diffuv::Status_code code)
 
 Parameterization parameterize_with_corners(const Input_mesh& in, const std::vector<Mesh::Vertex_index>& corners,
                                            const std::string& corner_file, const std::string& distance,
-                                           const diffuv::Repair_options& repair)
+                                           const diffuv::Repair_options& repair, const diffuv::Chart_drawing_options& drawing)
 {
   Parameterization result;
   result.atlas = std::make_unique<Atlas>(in.mesh);
@@ -37,7 +37,7 @@ Parameterization parameterize_with_corners(const Input_mesh& in, const std::vect
   diffuv::Disc_parameterization_report<Mesh> report;
   patch.status = with_distance(distance, [&](auto tag) {
     return diffuv::parameterize_disc<decltype(tag)>(in.mesh, in.mesh.points(), corners, *result.atlas,
-                                                    diffuv::Disc_parameterization_options{repair}, &report);
+                                                    diffuv::Disc_parameterization_options{repair, drawing}, &report);
   });
   patch.sides = std::move(report.sides);
   patch.repair = report.repair;
@@ -66,7 +66,7 @@ Parameterization parameterize_with_corners(const Input_mesh& in, const std::vect
 
 Parameterization parameterize_by_patches(const Input_mesh& in, const Patch_cli_options& options,
                                          const std::string& distance, const diffuv::Repair_options& repair,
-                                         std::size_t threads)
+                                         std::size_t threads, const diffuv::Chart_drawing_options& drawing)
 {
   Parameterization result;
   result.atlas = std::make_unique<Atlas>(in.mesh);
@@ -75,7 +75,7 @@ Parameterization parameterize_by_patches(const Input_mesh& in, const Patch_cli_o
   result.patches_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   result.patches = with_distance(distance, [&](auto tag) {
     return diffuv::parameterize_patches<decltype(tag)>(in.mesh, in.mesh.points(), result.seg, *result.atlas,
-                                                       diffuv::Patch_parameterization_options{repair, nullptr, true, threads});
+                                                       diffuv::Patch_parameterization_options{repair, nullptr, true, threads, drawing});
   });
   result.milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return result;

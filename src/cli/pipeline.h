@@ -32,6 +32,7 @@ struct Param_options {
   int runs = 1;
   std::string distance = "fmm";
   bool no_repair = false;
+  int warp_pieces = 6;       // pieces of each chart's warps of u and v (--warp-pieces; 0: plain rectangles)
   std::string view = "iso";
   std::string up = "auto";  // the mesh's up axis in the picture (--up): x, y, z or auto
   double azimuth = std::numeric_limits<double>::quiet_NaN(); // set: the camera's angles (refused with --view)
@@ -67,12 +68,14 @@ struct Parameterization {
 /// \throws diffuv::Input_error naming the corner file for bad corners, else the mesh
 Parameterization parameterize_with_corners(const Input_mesh& in, const std::vector<Mesh::Vertex_index>& corners,
                                            const std::string& corner_file, const std::string& distance,
-                                           const diffuv::Repair_options& repair);
+                                           const diffuv::Repair_options& repair,
+                                           const diffuv::Chart_drawing_options& drawing = diffuv::Chart_drawing_options());
 
 /// Any mesh: disc patches (from labels, or automatic), each mapped on its own.
 Parameterization parameterize_by_patches(const Input_mesh& in, const Patch_cli_options& options,
                                          const std::string& distance, const diffuv::Repair_options& repair,
-                                         std::size_t threads);
+                                         std::size_t threads,
+                                         const diffuv::Chart_drawing_options& drawing = diffuv::Chart_drawing_options());
 
 /// The distortion of one patch's chart, face by face and in summary: measured
 /// once, for the table and for the heat map.

@@ -7,6 +7,8 @@
 #ifndef DIFFUV_ATLAS_UV_ATLAS_H
 #define DIFFUV_ATLAS_UV_ATLAS_H
 
+#include <diffuv/atlas/axis_warp.h>
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Kd_tree.h>
 #include <CGAL/Orthogonal_k_neighbor_search.h>
@@ -95,8 +97,11 @@ public:
     double longest_uv_edge = 0.;
     std::unique_ptr<Tree> tree;
     /// The chart's rectangle in a texture: (u,v) in [0,1]^2 is drawn at
-    /// (u * size[0], v * size[1]); (1,1) draws every chart on the unit square.
+    /// (f(u) * size[0], g(v) * size[1]), f and g the warps below; (1,1) and
+    /// no warps draw every chart on the unit square.
     std::array<double, 2> size{{1., 1.}};
+    /// The warps of u and v (`Axis_warp`; the identity unless set).
+    std::array<Axis_warp, 2> warp;
   };
 
   explicit Uv_atlas(const TriangleMesh& tm)
@@ -251,23 +256,39 @@ public:
   /// \pre `width` and `height` are positive and finite
   void set_chart_size(std::size_t c, double width, double height) { charts_.at(c)->size = {width, height}; }
 
-  /// A halfedge property map like `corner_uv_map()`, in each chart's rectangle
-  /// (`Chart::size`): the texture coordinates an OBJ or glTF file carries.
-  auto corner_texture_map() const
+  /// Sets the warps of chart `c`'s u and v (`Chart::warp`).
+  void set_chart_warp(std::size_t c, Axis_warp u, Axis_warp v)
   {
-    return corner_map([this](vertex_descriptor v, std::size_t c) {
-      const Point_2 q = uv_in_chart(v, c);
-      return Point_2(q.x() * charts_[c]->size[0], q.y() * charts_[c]->size[1]);
-    });
+    charts_.at(c)->warp = {std::move(u), std::move(v)};
   }
 
-  /// A vertex property map like `chart_uv_map(c)`, in the chart's rectangle (`Chart::size`).
+  /// Where (u,v) of chart `c` is drawn on the unit square: (f(u), g(v)), the chart's warps.
+  Point_2 drawn_uv(std::size_t c, const Point_2& q) const
+  {
+    const Chart& chart = *charts_[c];
+    if(chart.warp[0].is_identity() && chart.warp[1].is_identity()) return q;
+    return Point_2(chart.warp[0](CGAL::to_double(q.x())), chart.warp[1](CGAL::to_double(q.y())));
+  }
+
+  /// A halfedge property map like `corner_uv_map()`, warped (`drawn_uv()`):
+  /// where each corner is drawn on its chart's unit square.
+  auto corner_drawn_uv_map() const
+  {
+    return corner_map([this](vertex_descriptor v, std::size_t c) { return drawn_uv(c, uv_in_chart(v, c)); });
+  }
+
+  /// A halfedge property map like `corner_uv_map()`, in each chart's rectangle
+  /// (`Chart::size`, warped): the texture coordinates an OBJ or glTF file carries.
+  auto corner_texture_map() const
+  {
+    return corner_map([this](vertex_descriptor v, std::size_t c) { return texture_point(c, uv_in_chart(v, c)); });
+  }
+
+  /// A vertex property map like `chart_uv_map(c)`, in the chart's rectangle (`Chart::size`, warped).
   auto chart_texture_map(std::size_t c) const
   {
-    return boost::make_function_property_map<vertex_descriptor>([this, c](vertex_descriptor v) {
-      const Point_2 q = uv_in_chart(v, c);
-      return Point_2(q.x() * charts_[c]->size[0], q.y() * charts_[c]->size[1]);
-    });
+    return boost::make_function_property_map<vertex_descriptor>(
+        [this, c](vertex_descriptor v) { return texture_point(c, uv_in_chart(v, c)); });
   }
 
   /// The local vertex of chart `c` whose (u,v) is nearest to `q`, in O(log n).
@@ -362,6 +383,13 @@ private:
       if(c == no_chart) return Point_2(nan, nan);
       return at(target(h, mesh_), c);
     });
+  }
+
+  // (u,v) of chart c in its rectangle: warped, then scaled.
+  Point_2 texture_point(std::size_t c, const Point_2& q) const
+  {
+    const Point_2 d = drawn_uv(c, q);
+    return Point_2(d.x() * charts_[c]->size[0], d.y() * charts_[c]->size[1]);
   }
 
   Point_2 uv_in_chart(vertex_descriptor v, std::size_t c) const

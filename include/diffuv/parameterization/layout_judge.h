@@ -224,7 +224,7 @@ std::size_t choose_fallback_corners(const TriangleMesh& tm, VertexPointMap vpm, 
     for(std::size_t p = 0; p < n; ++p)
       if(!wanted[p]) trial.patch_faces[p].clear();
     Uv_atlas<TriangleMesh> atlas(tm);
-    const auto results = parameterize_patches<Fmm_distance_tag>(tm, vpm, trial, atlas, Patch_parameterization_options{Repair_options(), nullptr, true, options.threads});
+    const auto results = parameterize_patches<Fmm_distance_tag>(tm, vpm, trial, atlas, Patch_parameterization_options{Repair_options(), nullptr, true, options.threads, Chart_drawing_options{0}});
     std::vector<double> scores(patches.size(), std::numeric_limits<double>::infinity());
     for(std::size_t i = 0; i < patches.size(); ++i) {
       const auto& r = results[patches[i]];
@@ -430,7 +430,7 @@ public:
       to_map.patch_faces[p].clear();
     }
     Uv_atlas<TriangleMesh> atlas(*tm_);
-    const auto results = parameterize_patches<Fmm_distance_tag>(*tm_, vpm_, to_map, atlas, Patch_parameterization_options{Repair_options{false}, nullptr, true, options_.threads});
+    const auto results = parameterize_patches<Fmm_distance_tag>(*tm_, vpm_, to_map, atlas, Patch_parameterization_options{Repair_options{false}, nullptr, true, options_.threads, Chart_drawing_options{0}});
     for(std::size_t p = 0; p < n; ++p) {
       if(!wanted[p]) continue;
       bool is_bad = !results[p].status;
@@ -462,7 +462,7 @@ public:
     for(std::size_t p = 0; p < n; ++p)
       if(p >= candidates.size() || !candidates[p]) to_map.patch_faces[p].clear();
     Uv_atlas<TriangleMesh> atlas(*tm_);
-    const auto results = parameterize_patches<Fmm_distance_tag>(*tm_, vpm_, to_map, atlas, Patch_parameterization_options{Repair_options(), nullptr, true, options_.threads});
+    const auto results = parameterize_patches<Fmm_distance_tag>(*tm_, vpm_, to_map, atlas, Patch_parameterization_options{Repair_options(), nullptr, true, options_.threads, Chart_drawing_options{0}});
     std::vector<std::size_t> bad;
     for(std::size_t p = 0; p < n; ++p) {
       // A patch that cannot be mapped at all (a lone triangle: fewer than

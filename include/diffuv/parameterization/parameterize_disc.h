@@ -29,6 +29,9 @@ struct Disc_parameterization_options {
   /// Whether and how folds are repaired (`repair_folds()`); on by default,
   /// `Repair_options{false}` gives the paper's raw method.
   Repair_options repair;
+  /// How the chart is drawn on its rectangle (`fit_chart_drawing()`);
+  /// `drawing.pieces` 0: the rectangle of least L2 stretch, no warp.
+  Chart_drawing_options drawing;
 };
 
 /// What `parameterize_disc()` did.
@@ -136,7 +139,13 @@ Status parameterize_disc(const TriangleMesh& tm, VertexPointMap vpm,
   const std::size_t chart = atlas.add_chart(std::move(chart_faces), std::move(chart_vertices), std::move(chart_uv));
   const auto size = stretch_optimal_rectangle(tm, vpm, atlas.chart(chart).faces, atlas.chart_uv_map(chart),
                                               side_length_rectangle(four, vpm));
-  atlas.set_chart_size(chart, size[0], size[1]);
+  if(options.drawing.pieces > 0) {
+    Chart_drawing drawing = fit_chart_drawing(atlas, chart, vpm, size, options.drawing);
+    atlas.set_chart_size(chart, drawing.size[0], drawing.size[1]);
+    atlas.set_chart_warp(chart, std::move(drawing.u), std::move(drawing.v));
+  } else {
+    atlas.set_chart_size(chart, size[0], size[1]);
+  }
   r.sides = std::move(four);
   return Status();
 }
@@ -191,6 +200,7 @@ Status parameterize_disc_without_isolated_vertices(
   }
   const std::size_t chart = atlas.add_chart(std::move(all_faces), mesh_vertex, std::move(chart_uv));
   atlas.set_chart_size(chart, local_atlas.chart(0).size[0], local_atlas.chart(0).size[1]);
+  atlas.set_chart_warp(chart, local_atlas.chart(0).warp[0], local_atlas.chart(0).warp[1]);
   if(report) {
     report->repair = local_report.repair;
     report->sides.u1 = to_mesh(local_report.sides.u1);

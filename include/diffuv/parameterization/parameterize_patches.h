@@ -104,6 +104,10 @@ struct Patch_parameterization_options {
   bool move_corners_off_ears = true;  ///< see `Region_sides_options`
   /// How many threads map patches: 0 as many as the machine has, 1 one after the other.
   std::size_t threads = 0;
+  /// How each chart is drawn on its rectangle (`fit_chart_drawing()`): the
+  /// warps of u and v; `drawing.pieces` 0 keeps the rectangle of least L2
+  /// stretch and no warp.
+  Chart_drawing_options drawing;
 };
 
 namespace internal {
@@ -255,16 +259,24 @@ std::vector<Patch_result<TriangleMesh>> parameterize_patches(const TriangleMesh&
     results[p].chart = atlas.add_chart(seg.patch_faces[p], std::move(charts[p].vertices), std::move(charts[p].uv));
     add_milliseconds[p] = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   }
-  for(std::size_t p = 0; p < seg.number_of_patches(); ++p) {
-    if(!results[p].status) continue;
+  // Each chart touches only its own rectangle and warps: in parallel.
+  internal::for_each_patch<TriangleMesh, VertexPointMap>(seg.number_of_patches(), options.threads,
+                                                         [&](std::size_t p, auto&) {
+    if(!results[p].status) return;
     const auto start = std::chrono::steady_clock::now();
     const std::size_t c = results[p].chart;
     const auto size = stretch_optimal_rectangle(tm, vpm, atlas.chart(c).faces, atlas.chart_uv_map(c),
                                                 side_length_rectangle(results[p].sides, vpm));
-    atlas.set_chart_size(c, size[0], size[1]);
+    if(options.drawing.pieces > 0) {
+      Chart_drawing drawing = fit_chart_drawing(atlas, c, vpm, size, options.drawing);
+      atlas.set_chart_size(c, drawing.size[0], drawing.size[1]);
+      atlas.set_chart_warp(c, std::move(drawing.u), std::move(drawing.v));
+    } else {
+      atlas.set_chart_size(c, size[0], size[1]);
+    }
     results[p].milliseconds += add_milliseconds[p] +
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  }
+  });
   return results;
 }
 

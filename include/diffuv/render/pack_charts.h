@@ -542,7 +542,8 @@ Chart_packing pack_charts(const Uv_atlas<TriangleMesh, Kernel>& atlas, VertexPoi
 }
 
 /// A halfedge property map: the packed texture coordinates of `target(h)` in
-/// the chart of `face(h)` (per corner, as `Uv_atlas::corner_uv_map()`); NaN
+/// the chart of `face(h)` (per corner, as `Uv_atlas::corner_uv_map()`, drawn
+/// with the chart's warps as `Uv_atlas::corner_drawn_uv_map()`); NaN
 /// for border halfedges and faces in no chart. `atlas` and `packing` must
 /// outlive the map.
 template <class TriangleMesh, class Kernel>
@@ -551,7 +552,7 @@ auto packed_corner_map(const Uv_atlas<TriangleMesh, Kernel>& atlas, const Chart_
   using halfedge_descriptor = typename boost::graph_traits<TriangleMesh>::halfedge_descriptor;
   using Atlas = Uv_atlas<TriangleMesh, Kernel>;
   using Point_2 = typename Atlas::Point_2;
-  const auto uv = atlas.corner_uv_map();
+  const auto uv = atlas.corner_drawn_uv_map();
   return boost::make_function_property_map<halfedge_descriptor>([&atlas, &packing, uv](halfedge_descriptor h) {
     const Point_2 q = get(uv, h);
     if(is_border(h, atlas.mesh())) return q;
