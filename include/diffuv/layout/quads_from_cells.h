@@ -130,11 +130,12 @@ Status quads_from_cells(const TriangleMesh& tm, VertexPointMap vpm, const Segmen
   // A quad must be a disc with its four corners on its border, counter-
   // clockwise; one that is not keeps its faces as an ordinary patch.
   std::size_t invalid = 0;
+  std::vector<Patch_loop<TriangleMesh>> loops;
   for(std::size_t p = 0; p < r.quads; ++p) {
     const auto& corner = sorted.patch_corners[p];
-    bool valid = static_cast<bool>(check_patch_disc(tm, sorted, p));
+    bool valid = static_cast<bool>(check_patch_disc(tm, vpm, sorted, p, loops));
     if(valid) {
-      const auto loop = patch_loops(tm, vpm, sorted, p).front().vertices;
+      const auto& loop = loops.front().vertices;
       std::array<std::size_t, 4> at{};
       for(std::size_t k = 0; k < 4 && valid; ++k) {
         at[k] = static_cast<std::size_t>(std::find(loop.begin(), loop.end(), corner[k]) - loop.begin());
