@@ -200,14 +200,21 @@ public:
     auto findex = get(boost::face_index, tm_);
     std::vector<int> result(num_faces(tm_), outside);
     for(std::size_t i = 0; i < faces_.size(); ++i) result[get(findex, faces_[i])] = static_cast<int>(origin_[i]);
-    std::vector<std::size_t> by_distance(faces_.size());
-    std::iota(by_distance.begin(), by_distance.end(), 0);
-    std::sort(by_distance.begin(), by_distance.end(), [&](std::size_t a, std::size_t b) {
-      return distance_[a] != distance_[b] ? distance_[a] > distance_[b] : origin_[a] < origin_[b];
+    // The keys are sorted next to their positions rather than through them
+    // (fewer cache misses). std::sort moves elements as the comparisons
+    // decide, so faces with equal keys end in the same order as before.
+    struct Keyed {
+      double distance;
+      std::size_t origin, i;
+    };
+    std::vector<Keyed> by_distance(faces_.size());
+    for(std::size_t i = 0; i < faces_.size(); ++i) by_distance[i] = {distance_[i], origin_[i], i};
+    std::sort(by_distance.begin(), by_distance.end(), [](const Keyed& a, const Keyed& b) {
+      return a.distance != b.distance ? a.distance > b.distance : a.origin < b.origin;
     });
     std::vector<face_descriptor> order;
     order.reserve(faces_.size());
-    for(std::size_t i : by_distance) order.push_back(faces_[i]);
+    for(const Keyed& k : by_distance) order.push_back(faces_[k.i]);
     smooth_region_borders(tm_, result, 3, outside, &order);
     return result;
   }
