@@ -232,6 +232,31 @@ TEST(Patches, DiscCheckGivesTheLoopsItWalked)
   EXPECT_TRUE(loops.empty());
 }
 
+TEST(Patches, ConnectedPartsAreThoseOfPatchesFromLabels)
+{
+  // A set of faces in several components (cow's faces in two height bands
+  // and a scatter of lone faces), split with one marks array: the parts,
+  // their order and their faces' order are patches_from_labels()' own.
+  const Mesh& cow = cgal_mesh("cow.off");
+  std::vector<std::size_t> marks;
+  for(int band = 0; band < 3; ++band) {
+    std::vector<face_descriptor> piece;
+    for(auto f : faces(cow)) {
+      const int b = int(4 * (face_centroid(cow, f).y() + 0.31) / 0.62);
+      if(b == band || b == band + 2 || f.idx() % 97 == 0) piece.push_back(f);
+    }
+    std::reverse(piece.begin(), piece.end());  // the parts do not depend on the order given
+    std::vector<int> labels(num_faces(cow), std::numeric_limits<int>::min());
+    for(face_descriptor f : piece) labels[f.idx()] = 0;
+    const Seg reference = diffuv::patches_from_labels(cow, cow.points(), labels);
+    const auto parts = diffuv::connected_parts(cow, cow.points(), piece, marks);
+    ASSERT_GT(reference.number_of_patches(), 2u) << "band " << band;
+    ASSERT_EQ(parts.size(), reference.number_of_patches()) << "band " << band;
+    for(std::size_t p = 0; p < parts.size(); ++p) EXPECT_EQ(parts[p], reference.patch_faces[p]) << "band " << band << " part " << p;
+    EXPECT_TRUE(std::all_of(marks.begin(), marks.end(), [](std::size_t m) { return m == Seg::no_patch; }));
+  }
+}
+
 TEST(Patches, EarFacesMoveAcrossRegionBorders)
 {
   const Mesh grid = make_grid(4, 4);

@@ -111,12 +111,10 @@ Status quads_from_cells(const TriangleMesh& tm, VertexPointMap vpm, const Segmen
     sorted.patch_corners.push_back(list.corners[q]);
   }
   r.quads = sorted.patch_faces.size();
+  std::vector<std::size_t> marks;  // connected_parts()'s, shared by the pieces
   for(auto& piece : list.fallback_pieces) {
     // A piece may be in several components: each is a patch.
-    std::vector<int> labels(num_faces(tm), std::numeric_limits<int>::min());
-    for(face_descriptor f : piece) labels[get(findex, f)] = 0;
-    Segmentation<TriangleMesh> parts = patches_from_labels(tm, vpm, labels);
-    for(auto& part : parts.patch_faces) {
+    for(auto& part : connected_parts(tm, vpm, piece, marks)) {
       sorted.patch_faces.push_back(std::move(part));
       sorted.patch_corners.push_back(Segmentation<TriangleMesh>::no_corners());
       ++r.fallback_patches;
