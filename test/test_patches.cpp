@@ -188,6 +188,75 @@ TEST(Patches, FastDiscCheckAgreesWithTheFilteredGraphCheck)
   EXPECT_GT(compare(cow, raw), 0u);
 }
 
+TEST(Patches, DiscCheckGivesTheLoopsItWalked)
+{
+  // The form with loops answers as the plain one, and its loops are
+  // patch_loops()' own: disc or not, once the patch is connected.
+  auto same_loops = [](const std::vector<diffuv::Patch_loop<Mesh>>& a, const std::vector<diffuv::Patch_loop<Mesh>>& b) {
+    if(a.size() != b.size()) return false;
+    for(std::size_t i = 0; i < a.size(); ++i)
+      if(a[i].vertices != b[i].vertices || a[i].halfedges != b[i].halfedges || a[i].neighbour != b[i].neighbour ||
+         a[i].length != b[i].length)
+        return false;
+    return true;
+  };
+  auto compare = [&](const Mesh& m, const Seg& seg) {
+    std::size_t not_discs = 0;
+    std::vector<diffuv::Patch_loop<Mesh>> loops;
+    for(std::size_t p = 0; p < seg.number_of_patches(); ++p) {
+      const diffuv::Status plain = diffuv::check_patch_disc(m, seg, p);
+      const diffuv::Status with_loops = diffuv::check_patch_disc(m, m.points(), seg, p, loops);
+      EXPECT_EQ(with_loops.code, plain.code) << "patch " << p;
+      EXPECT_TRUE(same_loops(loops, diffuv::patch_loops(m, m.points(), seg, p))) << "patch " << p;
+      if(!plain.ok()) ++not_discs;
+    }
+    return not_discs;
+  };
+  const Mesh& s = sphere();
+  Seg bands = diffuv::patches_from_labels(s, s.points(), banded_labels(s, 0.25));
+  EXPECT_EQ(compare(s, bands), 1u);  // the band: two loops
+  const Mesh& cow = cgal_mesh("cow.off");
+  std::vector<int> raw(num_faces(cow));
+  for(auto f : faces(cow)) raw[f.idx()] = int(4 * (face_centroid(cow, f).y() + 0.31) / 0.62); // height bands
+  EXPECT_GT(compare(cow, diffuv::patches_from_labels(cow, cow.points(), raw)), 0u);
+
+  // The two caps as one patch: not connected, so no loops (and any left from before cleared).
+  ASSERT_EQ(bands.number_of_patches(), 3u);
+  std::vector<diffuv::Patch_loop<Mesh>> loops(2);
+  for(face_descriptor f : bands.patch_faces[2]) {
+    bands.patch_faces[0].push_back(f);
+    bands.face_patch[f.idx()] = 0;
+  }
+  bands.patch_faces[2].clear();
+  EXPECT_EQ(diffuv::check_patch_disc(s, s.points(), bands, 0, loops).code, diffuv::Status_code::disconnected_mesh);
+  EXPECT_TRUE(loops.empty());
+}
+
+TEST(Patches, ConnectedPartsAreThoseOfPatchesFromLabels)
+{
+  // A set of faces in several components (cow's faces in two height bands
+  // and a scatter of lone faces), split with one marks array: the parts,
+  // their order and their faces' order are patches_from_labels()' own.
+  const Mesh& cow = cgal_mesh("cow.off");
+  std::vector<std::size_t> marks;
+  for(int band = 0; band < 3; ++band) {
+    std::vector<face_descriptor> piece;
+    for(auto f : faces(cow)) {
+      const int b = int(4 * (face_centroid(cow, f).y() + 0.31) / 0.62);
+      if(b == band || b == band + 2 || f.idx() % 97 == 0) piece.push_back(f);
+    }
+    std::reverse(piece.begin(), piece.end());  // the parts do not depend on the order given
+    std::vector<int> labels(num_faces(cow), std::numeric_limits<int>::min());
+    for(face_descriptor f : piece) labels[f.idx()] = 0;
+    const Seg reference = diffuv::patches_from_labels(cow, cow.points(), labels);
+    const auto parts = diffuv::connected_parts(cow, cow.points(), piece, marks);
+    ASSERT_GT(reference.number_of_patches(), 2u) << "band " << band;
+    ASSERT_EQ(parts.size(), reference.number_of_patches()) << "band " << band;
+    for(std::size_t p = 0; p < parts.size(); ++p) EXPECT_EQ(parts[p], reference.patch_faces[p]) << "band " << band << " part " << p;
+    EXPECT_TRUE(std::all_of(marks.begin(), marks.end(), [](std::size_t m) { return m == Seg::no_patch; }));
+  }
+}
+
 TEST(Patches, EarFacesMoveAcrossRegionBorders)
 {
   const Mesh grid = make_grid(4, 4);

@@ -296,11 +296,12 @@ Status quad_layout(const TriangleMesh& tm, VertexPointMap vpm, const std::vector
         const std::size_t s = farthest_in(region_of_cell[c], where);
         if(s < region_cells[region_of_cell[c]].voronoi->faces().size()) added.emplace_back(region_of_cell[c], s);
       };
+      std::vector<Patch_loop<TriangleMesh>> loops;  // of the cell checked
       if(seed_count() < options.max_cells)
         for(std::size_t c = 0; c < cells.number_of_patches(); ++c) {
-          if(!check_patch_disc(tm, cells, c)) { refine(c, cells.patch_faces[c]); continue; }
+          if(!check_patch_disc(tm, vpm, cells, c, loops)) { refine(c, cells.patch_faces[c]); continue; }
           if(cells.patch_faces[c].size() < options.min_fix_faces) continue;
-          const auto loop = patch_loops(tm, vpm, cells, c).front();
+          const auto& loop = loops.front();
           const std::size_t n = loop.neighbour.size();
           std::map<std::size_t, std::size_t> arcs_with;
           for(std::size_t i = 0; i < n; ++i)

@@ -111,12 +111,10 @@ Status quads_from_cells(const TriangleMesh& tm, VertexPointMap vpm, const Segmen
     sorted.patch_corners.push_back(list.corners[q]);
   }
   r.quads = sorted.patch_faces.size();
+  std::vector<std::size_t> marks;  // connected_parts()'s, shared by the pieces
   for(auto& piece : list.fallback_pieces) {
     // A piece may be in several components: each is a patch.
-    std::vector<int> labels(num_faces(tm), std::numeric_limits<int>::min());
-    for(face_descriptor f : piece) labels[get(findex, f)] = 0;
-    Segmentation<TriangleMesh> parts = patches_from_labels(tm, vpm, labels);
-    for(auto& part : parts.patch_faces) {
+    for(auto& part : connected_parts(tm, vpm, piece, marks)) {
       sorted.patch_faces.push_back(std::move(part));
       sorted.patch_corners.push_back(Segmentation<TriangleMesh>::no_corners());
       ++r.fallback_patches;
@@ -130,11 +128,12 @@ Status quads_from_cells(const TriangleMesh& tm, VertexPointMap vpm, const Segmen
   // A quad must be a disc with its four corners on its border, counter-
   // clockwise; one that is not keeps its faces as an ordinary patch.
   std::size_t invalid = 0;
+  std::vector<Patch_loop<TriangleMesh>> loops;
   for(std::size_t p = 0; p < r.quads; ++p) {
     const auto& corner = sorted.patch_corners[p];
-    bool valid = static_cast<bool>(check_patch_disc(tm, sorted, p));
+    bool valid = static_cast<bool>(check_patch_disc(tm, vpm, sorted, p, loops));
     if(valid) {
-      const auto loop = patch_loops(tm, vpm, sorted, p).front().vertices;
+      const auto& loop = loops.front().vertices;
       std::array<std::size_t, 4> at{};
       for(std::size_t k = 0; k < 4 && valid; ++k) {
         at[k] = static_cast<std::size_t>(std::find(loop.begin(), loop.end(), corner[k]) - loop.begin());

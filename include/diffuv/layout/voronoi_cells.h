@@ -20,7 +20,7 @@
 #include <CGAL/centroid.h>
 #include <CGAL/squared_distance_3.h>
 
-#include <boost/graph/adjacency_list.hpp>
+#include <boost/graph/compressed_sparse_row_graph.hpp>
 #include <boost/property_map/function_property_map.hpp>
 
 #include <algorithm>
@@ -29,6 +29,7 @@
 #include <limits>
 #include <numeric>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 namespace diffuv {
@@ -67,6 +68,11 @@ public:
       for(std::size_t i = 0; i < n; ++i) position_[get(findex, faces_[i])] = i;
     }
     for(std::size_t i = 0; i < n; ++i) centroids_.push_back(centroid(faces_[i]));
+    // Both directions of each dual edge, in the order the edges are found:
+    // each face's neighbours come out in that order (the compressed rows keep
+    // it), as they did from the adjacency list this graph replaced.
+    std::vector<std::pair<std::size_t, std::size_t>> arcs;
+    std::vector<Dual_edge> weights;
     for(std::size_t i = 0; i < n; ++i)
       for(auto h : CGAL::halfedges_around_face(halfedge(faces_[i], tm_), tm_)) {
         const auto g = face(opposite(h, tm_), tm_);
@@ -79,9 +85,13 @@ public:
             const auto nj = CGAL::Polygon_mesh_processing::compute_face_normal(g, tm_, CGAL::parameters::vertex_point_map(vpm_));
             w += bend_length * std::acos(std::clamp(CGAL::to_double(ni * nj), -1.0, 1.0));
           }
-          boost::add_edge(i, j, w, dual_);
+          arcs.emplace_back(i, j);
+          arcs.emplace_back(j, i);
+          weights.push_back(Dual_edge{w});
+          weights.push_back(Dual_edge{w});
         }
       }
+    dual_ = Dual(boost::edges_are_unsorted_multi_pass, arcs.begin(), arcs.end(), weights.begin(), n);
   }
 
   const std::vector<face_descriptor>& faces() const { return faces_; }
@@ -97,14 +107,14 @@ public:
   void set_seeds(std::vector<std::size_t> seeds)
   {
     seeds_ = std::move(seeds);
-    dijkstra_.run(seeds_, get(boost::edge_weight, dual_), distance_map(), origin_map());
+    dijkstra_.run(seeds_, weight_map(), distance_map(), origin_map());
   }
 
   /// Adds one seed: only the faces now nearer to it than to every other seed change.
   void add_seed(std::size_t s)
   {
     seeds_.push_back(s);
-    dijkstra_.add_source(s, seeds_.size() - 1, get(boost::edge_weight, dual_), distance_map(), origin_map());
+    dijkstra_.add_source(s, seeds_.size() - 1, weight_map(), distance_map(), origin_map());
   }
 
   /// The face farthest from the seeds among those for which `keep(i)` holds
@@ -160,7 +170,7 @@ public:
     // Only cell k and the cells next to it change: moved and added seeds
     // instead of a whole run (a mesh with many fingers has tens of caps).
     seeds_[k] = chosen[0];
-    dijkstra_.move_source(k, chosen[0], get(boost::edge_weight, dual_), distance_map(), origin_map());
+    dijkstra_.move_source(k, chosen[0], weight_map(), distance_map(), origin_map());
     add_seed(chosen[1]);
     add_seed(chosen[2]);
     return true;
@@ -190,14 +200,21 @@ public:
     auto findex = get(boost::face_index, tm_);
     std::vector<int> result(num_faces(tm_), outside);
     for(std::size_t i = 0; i < faces_.size(); ++i) result[get(findex, faces_[i])] = static_cast<int>(origin_[i]);
-    std::vector<std::size_t> by_distance(faces_.size());
-    std::iota(by_distance.begin(), by_distance.end(), 0);
-    std::sort(by_distance.begin(), by_distance.end(), [&](std::size_t a, std::size_t b) {
-      return distance_[a] != distance_[b] ? distance_[a] > distance_[b] : origin_[a] < origin_[b];
+    // The keys are sorted next to their positions rather than through them
+    // (fewer cache misses). std::sort moves elements as the comparisons
+    // decide, so faces with equal keys end in the same order as before.
+    struct Keyed {
+      double distance;
+      std::size_t origin, i;
+    };
+    std::vector<Keyed> by_distance(faces_.size());
+    for(std::size_t i = 0; i < faces_.size(); ++i) by_distance[i] = {distance_[i], origin_[i], i};
+    std::sort(by_distance.begin(), by_distance.end(), [](const Keyed& a, const Keyed& b) {
+      return a.distance != b.distance ? a.distance > b.distance : a.origin < b.origin;
     });
     std::vector<face_descriptor> order;
     order.reserve(faces_.size());
-    for(std::size_t i : by_distance) order.push_back(faces_[i]);
+    for(const Keyed& k : by_distance) order.push_back(faces_[k.i]);
     smooth_region_borders(tm_, result, 3, outside, &order);
     return result;
   }
@@ -220,7 +237,7 @@ public:
         if(on_border) border.push_back(i);
       }
       // Depth inside each cell: edges between two cells cost +infinity.
-      const auto& base = get(boost::edge_weight, dual_);
+      const auto base = weight_map();
       auto inside = boost::make_function_property_map<typename boost::graph_traits<Dual>::edge_descriptor, double>(
           [&](const typename boost::graph_traits<Dual>::edge_descriptor& e) {
             return cell[source(e, dual_)] == cell[target(e, dual_)] ? get(base, e)
@@ -245,8 +262,13 @@ public:
   }
 
 private:
-  using Dual = boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS, boost::no_property,
-                                     boost::property<boost::edge_weight_t, double>>;
+  // The dual graph in compressed rows: both directions of each edge, its
+  // weight stored next to its target (faster to build and to walk than an
+  // adjacency list).
+  struct Dual_edge {
+    double weight;
+  };
+  using Dual = boost::compressed_sparse_row_graph<boost::directedS, boost::no_property, Dual_edge>;
   using Point = typename boost::property_traits<VertexPointMap>::value_type;
 
   Point centroid(face_descriptor f) const
@@ -254,6 +276,7 @@ private:
     const auto h = halfedge(f, tm_);
     return CGAL::centroid(get(vpm_, source(h, tm_)), get(vpm_, target(h, tm_)), get(vpm_, target(next(h, tm_), tm_)));
   }
+  auto weight_map() const { return get(&Dual_edge::weight, dual_); }
   auto distance_map() { return boost::make_iterator_property_map(distance_.begin(), get(boost::vertex_index, dual_)); }
   auto origin_map() { return boost::make_iterator_property_map(origin_.begin(), get(boost::vertex_index, dual_)); }
 
@@ -274,7 +297,10 @@ private:
   std::vector<std::size_t> seeds_;
   std::vector<double> distance_;
   std::vector<std::size_t> origin_;
-  Multi_source_dijkstra<Dual> dijkstra_;  // after dual_: sized by its vertices
+  // The 4-ary heap: the nearest seed on an exact tie of distances depends on
+  // the order of settling, and this heap gives the Fibonacci heap's layouts
+  // on every mesh of the data set (doc/layout.md, "Layout time", 8).
+  Multi_source_dijkstra<Dual, Quaternary_heap_tag> dijkstra_;  // after dual_: sized by its vertices
 };
 
 } // namespace diffuv

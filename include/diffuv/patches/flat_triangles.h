@@ -119,6 +119,8 @@ std::size_t hand_flat_triangles_to_neighbours(const TriangleMesh& tm, VertexPoin
     for(std::size_t round = 0; round < max_rounds; ++round) {
       std::size_t this_round = 0;
       for(std::size_t p = 0; p < seg.number_of_patches(); ++p) {
+        // A quad of the layout hands off nothing (below): not measured.
+        if(seg.corners(p)) continue;
         if(count_flat(p) == unusable || flat.empty()) continue;
         // In the order of their centroids, not of their indices: the result
         // then does not depend on the face numbering.
@@ -147,6 +149,9 @@ std::size_t hand_flat_triangles_to_neighbours(const TriangleMesh& tm, VertexPoin
           }
           std::sort(touched.begin(), touched.end());
           touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
+          // Next to a quad nothing is handed (below): the patches are not measured.
+          if(std::any_of(touched.begin(), touched.end(), [&](std::size_t t) { return seg.corners(t) != nullptr; }))
+            continue;
           // The flat triangles of p and the touched patches together, and their
           // corners (p's first, then the touched patches' in order).
           std::vector<vertex_descriptor> all_corners;
@@ -183,9 +188,8 @@ std::size_t hand_flat_triangles_to_neighbours(const TriangleMesh& tm, VertexPoin
           for(std::size_t q : touched) {
             if(keep_labels && seg.patch_label[q] != seg.patch_label[p]) continue;
             // A quad of the layout keeps its faces and its neighbours along
-            // its sides: a hand-off there would give a side two patches.
-            if(seg.corners(p) || std::any_of(touched.begin(), touched.end(), [&](std::size_t t) { return seg.corners(t) != nullptr; }))
-              continue;
+            // its sides (a hand-off there would give a side two patches):
+            // p and the touched patches have no chosen corners, as tested above.
             const std::size_t position = move(f, p, q);
             if(total_flat() < before && (!near_only || corners_stay())) {
               ++this_round;

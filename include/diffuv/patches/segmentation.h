@@ -156,9 +156,17 @@ std::vector<Patch_loop<TriangleMesh>> patch_loops(const TriangleMesh& tm, Vertex
 /// Costs O(patch size) (unlike `check_disc()` on a `Face_filtered_graph`,
 /// which touches the whole mesh), so it can run on every patch of every
 /// refinement step.
-template <class TriangleMesh>
-Status check_patch_disc(const TriangleMesh& tm, const Segmentation<TriangleMesh>& seg, std::size_t p)
+///
+/// This form also gives the loops it walked: `loops` receives
+/// `patch_loops(tm, vpm, seg, p)` once the patch is found to be made of
+/// triangles and connected (whether or not it is a disc), and is left empty
+/// otherwise. Callers that go on to walk a disc's border use them instead of
+/// walking it again.
+template <class TriangleMesh, class VertexPointMap>
+Status check_patch_disc(const TriangleMesh& tm, VertexPointMap vpm, const Segmentation<TriangleMesh>& seg, std::size_t p,
+                        std::vector<Patch_loop<TriangleMesh>>& loops)
 {
+  loops.clear();
   const auto& pf = seg.patch_faces[p];
   auto fail = [&](Status_code code, const std::string& what) {
     return Status(code, what, "patch " + std::to_string(p) + " (label " + std::to_string(seg.patch_label[p]) + ")");
@@ -196,7 +204,7 @@ Status check_patch_disc(const TriangleMesh& tm, const Segmentation<TriangleMesh>
   if(queue.size() != pf.size())
     return fail(Status_code::disconnected_mesh, "");
 
-  const auto loops = patch_loops(tm, get(CGAL::vertex_point, tm), seg, p);
+  loops = patch_loops(tm, vpm, seg, p);
   if(loops.empty()) return fail(Status_code::no_border, "");
   if(loops.size() > 1) return fail(Status_code::several_borders, std::to_string(loops.size()) + " boundary loops");
   std::vector<std::size_t> loop_ids;
@@ -208,6 +216,14 @@ Status check_patch_disc(const TriangleMesh& tm, const Segmentation<TriangleMesh>
   const std::size_t F = pf.size(), E = (3 * F + boundary_edges) / 2;
   const Status disc = internal::disc_euler_status(static_cast<long long>(V) - static_cast<long long>(E) + static_cast<long long>(F));
   return disc ? disc : fail(disc.code, disc.detail);
+}
+
+/// Checks that patch `p` is a topological disc (the form above, without its loops).
+template <class TriangleMesh>
+Status check_patch_disc(const TriangleMesh& tm, const Segmentation<TriangleMesh>& seg, std::size_t p)
+{
+  std::vector<Patch_loop<TriangleMesh>> loops;
+  return check_patch_disc(tm, get(CGAL::vertex_point, tm), seg, p, loops);
 }
 
 } // namespace diffuv

@@ -217,10 +217,10 @@ std::size_t split_at_junctions(const TriangleMesh& tm, VertexPointMap vpm, Segme
     trial->split(p, std::move(pieces), findex);
     bool discs = true;
     std::size_t needed_after = 0;  // k + 2 if the path left no ear tip: its ends count twice
+    std::vector<Patch_loop<TriangleMesh>> piece_loops;
     for(std::size_t q = p; q < p + 2 && discs; ++q) {
-      discs = static_cast<bool>(check_patch_disc(tm, *trial, q));
+      discs = static_cast<bool>(check_patch_disc(tm, vpm, *trial, q, piece_loops));
       if(!discs) break;
-      const auto piece_loops = patch_loops(tm, vpm, *trial, q);
       discs = piece_loops.front().vertices.size() >= 4;
       std::vector<std::size_t> piece_needed;
       std::vector<char> piece_junction;

@@ -138,36 +138,38 @@ void split_dual_regions(const TriangleMesh& tm, VertexPointMap vpm, const Segmen
     if(centres == 0 && junctions == 1) return junction;
     return boost::graph_traits<TriangleMesh>::null_vertex();
   };
+  // Each region's border loop, walked once by the disc check (empty if the
+  // region is not a disc).
+  std::vector<Patch_loop<TriangleMesh>> loop_of(duals.number_of_patches());
   {
     // The fans the loop below asks for, made in parallel beforehand (the same
     // tests pick the regions and their targets).
-    std::vector<std::vector<vertex_descriptor>> loop_of(duals.number_of_patches());
     std::vector<typename Fan_memo<TriangleMesh>::Request> wanted;
+    std::vector<Patch_loop<TriangleMesh>> loops;
     for(std::size_t t = 0; t < duals.number_of_patches(); ++t) {
-      if(!check_patch_disc(tm, duals, t)) continue;
-      loop_of[t] = patch_loops(tm, vpm, duals, t).front().vertices;
+      if(!check_patch_disc(tm, vpm, duals, t, loops)) continue;
+      loop_of[t] = std::move(loops.front());
       std::vector<vertex_descriptor> targets;
       bool framed = false;
-      for(vertex_descriptor v : loop_of[t]) {
+      for(vertex_descriptor v : loop_of[t].vertices) {
         framed = framed || framed_junction[get(vindex, v)];
         if(is_mid[get(vindex, v)]) targets.push_back(v);
       }
-      if(!framed && targets.size() >= 2) wanted.push_back({&duals.patch_faces[t], &loop_of[t], std::move(targets)});
+      if(!framed && targets.size() >= 2) wanted.push_back({&duals.patch_faces[t], &loop_of[t].vertices, std::move(targets)});
     }
     fans_made.prefetch(tm, vpm, wanted);
   }
   for(std::size_t t = 0; t < duals.number_of_patches(); ++t) {
-    bool ok = static_cast<bool>(check_patch_disc(tm, duals, t));
+    bool ok = !loop_of[t].vertices.empty();
     if(ok) {
       // Next to a framed cell, the walls end at the junction: keep the plain sectors.
-      const auto loops = patch_loops(tm, vpm, duals, t);
-      for(vertex_descriptor v : loops.front().vertices)
+      for(vertex_descriptor v : loop_of[t].vertices)
         if(framed_junction[get(vindex, v)]) ok = false;
     }
     std::vector<std::array<vertex_descriptor, 4>> corners;
     const Fan* fan_of_region = nullptr;
     if(ok) {
-      const auto loop = patch_loops(tm, vpm, duals, t).front();
+      const auto& loop = loop_of[t];
       const std::size_t n = loop.vertices.size();
       std::vector<std::size_t> mids;
       for(std::size_t i = 0; i < n; ++i)
