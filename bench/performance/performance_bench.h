@@ -141,7 +141,11 @@ Pipeline_run run_pipeline(const Case& c, bool repair, std::size_t threads = 1)
   Pipeline_run r;
   const auto t0 = Clock::now();
   r.atlas = std::make_unique<Atlas>(c.mesh);
-  const auto results = diffuv::parameterize_patches<DistanceTag, HeapTag>(c.mesh, c.mesh.points(), c.seg, *r.atlas, diffuv::Patch_parameterization_options{diffuv::Repair_options{repair}, nullptr, true, threads});
+  // The paper's method (no repair) draws its charts on plain rectangles: the
+  // warps of the default pipeline's charts are the atlas's, not the method's.
+  diffuv::Chart_drawing_options drawing;
+  if(!repair) drawing.pieces = 0;
+  const auto results = diffuv::parameterize_patches<DistanceTag, HeapTag>(c.mesh, c.mesh.points(), c.seg, *r.atlas, diffuv::Patch_parameterization_options{diffuv::Repair_options{repair}, nullptr, true, threads, drawing});
   r.ms = ms_since(t0);
   for(const auto& p : results) {
     if(!p.status) ++r.failed;
