@@ -163,6 +163,9 @@ TEST(ChartDrawing, WarpUndoesUnevenSpacing)
     EXPECT_EQ(w->knots.back(), 1.);
     for(std::size_t j = 0; j + 1 < w->knots.size(); ++j) EXPECT_LT(w->knots[j], w->knots[j + 1]);
   }
+  EXPECT_TRUE(std::isnan(drawing.u(std::numeric_limits<double>::quiet_NaN())));
+  EXPECT_EQ(drawing.u(-0.5), 0.);
+  EXPECT_EQ(drawing.u(1.5), 1.);
   // f(u) near u^2 (a piecewise-linear fit of it), g near the identity.
   for(double t : {0.25, 0.5, 0.75}) {
     EXPECT_NEAR(drawing.u(t), t * t, 0.03) << t;
@@ -227,4 +230,31 @@ TEST(ChartDrawing, CowsChartsStayOneToOneOnTheirRectanglesAndStretchLess)
   EXPECT_GT(charts_warped, results.size() / 2);
   EXPECT_LT(warped_total.stretch_l2, 0.95 * plain_total.stretch_l2);
   EXPECT_LT(warped_total.area_mean, 0.95 * plain_total.area_mean);
+}
+
+TEST(ChartDrawing, SameDrawingsOnOneThreadAndOnMany)
+{
+  // The fits run in parallel over the charts: every chart's rectangle and
+  // warps must not depend on the number of threads (nor race on the atlas's
+  // look-ups, which the fits read).
+  const Mesh& m = cgal_mesh("cow.off");
+  const Seg seg = automatic_layout(m);
+  diffuv::Uv_atlas<Mesh> one(m), many(m);
+  diffuv::Patch_parameterization_options serial, parallel;
+  serial.threads = 1;
+  parallel.threads = 4;
+  const auto a = diffuv::parameterize_patches(m, m.points(), seg, one, serial);
+  const auto b = diffuv::parameterize_patches(m, m.points(), seg, many, parallel);
+  ASSERT_EQ(a.size(), b.size());
+  std::size_t warped = 0;
+  for(std::size_t p = 0; p < a.size(); ++p) {
+    ASSERT_TRUE(a[p].status.ok() && b[p].status.ok());
+    const auto& x = one.chart(a[p].chart);
+    const auto& y = many.chart(b[p].chart);
+    EXPECT_EQ(x.size, y.size) << "patch " << p;
+    EXPECT_EQ(x.warp[0].knots, y.warp[0].knots) << "patch " << p;
+    EXPECT_EQ(x.warp[1].knots, y.warp[1].knots) << "patch " << p;
+    warped += !x.warp[0].is_identity();
+  }
+  EXPECT_GT(warped, a.size() / 2);
 }

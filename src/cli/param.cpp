@@ -88,7 +88,7 @@ void run_param(const Param_options& options)
   diffuv::Repair_options repair;
   repair.enabled = !options.no_repair;
   diffuv::Chart_drawing_options drawing;
-  drawing.pieces = static_cast<std::size_t>(options.warp_pieces);
+  drawing.pieces = options.unit_squares ? 0 : static_cast<std::size_t>(options.warp_pieces);  // unit squares: canonical (u,v)
   // More threads than cores gain nothing, and oneTBB would warn about them.
   const std::size_t cores = (std::max)(1u, std::thread::hardware_concurrency());
   const std::size_t threads = options.threads == 0 ? 0 : (std::min)(options.threads, cores);

@@ -6,7 +6,7 @@
 // and fixing 0 and 1, keeps every iso-line of the map an iso-line of the
 // drawing and the chart's border on the rectangle's border, and gives each
 // band of u and of v the share of the rectangle the surface asks for
-// (`fit_chart_warp()` in parameterization/chart_rectangle.h chooses them).
+// (`fit_chart_drawing()` in parameterization/chart_rectangle.h chooses them).
 #ifndef DIFFUV_ATLAS_AXIS_WARP_H
 #define DIFFUV_ATLAS_AXIS_WARP_H
 
@@ -25,10 +25,11 @@ struct Axis_warp {
 
   bool is_identity() const { return knots.empty(); }
 
-  /// The image of `t` (values outside [0,1] are clamped to it when the warp is not the identity).
+  /// The image of `t` (values outside [0,1] are clamped to it when the warp
+  /// is not the identity; NaN, a corner in no chart, stays NaN).
   double operator()(double t) const
   {
-    if(knots.size() < 2) return t;
+    if(knots.size() < 2 || std::isnan(t)) return t;
     const std::size_t pieces = knots.size() - 1;
     const double x = std::clamp(t, 0., 1.) * static_cast<double>(pieces);
     const std::size_t j = std::min(static_cast<std::size_t>(x), pieces - 1);

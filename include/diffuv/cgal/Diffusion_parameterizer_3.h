@@ -336,7 +336,10 @@ private:
     typedef typename CGAL::Default::Get<DistanceTag, Default_distance_tag>::type Distance;
     typedef typename CGAL::Default::Get<HeapTag, Fibonacci_heap_tag>::type Heap;
     Disc_parameterization_report<Work_mesh> report;
-    Status status = parameterize_disc<Distance, Heap>(work, get(CGAL::vertex_point, work), corners, atlas, {}, &report);
+    // CGAL's uv map gets the canonical (u,v) on the unit square: no warps to fit.
+    Disc_parameterization_options options;
+    options.drawing.pieces = 0;
+    Status status = parameterize_disc<Distance, Heap>(work, get(CGAL::vertex_point, work), corners, atlas, options, &report);
     if(status && report.repair.remaining_folded_faces > 0)
       status = Status(Status_code::not_injective,
                       internal::count_text(report.repair.remaining_folded_faces, "folded face"));

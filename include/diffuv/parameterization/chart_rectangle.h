@@ -121,7 +121,7 @@ std::array<double, 2> side_length_rectangle(const Four_sides<VertexDescriptor>& 
 
 /// Options of `fit_chart_drawing()`.
 struct Chart_drawing_options {
-  std::size_t pieces = 6;          ///< linear pieces of each axis's warp (0: no warp, the aspect alone)
+  std::size_t pieces = 6;          ///< linear pieces of each axis's warp (0: no fit at all; 1: the aspect alone)
   std::size_t max_iterations = 30; ///< quasi-Newton steps at most
 };
 
@@ -156,7 +156,7 @@ public:
     const double k = static_cast<double>(pieces_);
     for(std::size_t i = 0; i < uv.size(); ++i)
       for(int a = 0; a < 2; ++a) {
-        const double x = std::clamp(uv[i][a], 0., 1.) * k;
+        const double x = std::isfinite(uv[i][a]) ? std::clamp(uv[i][a], 0., 1.) * k : 0.;  // NaN: a vertex in no triangle
         piece_[i][a] = std::min(static_cast<std::size_t>(x), pieces_ - 1);
         offset_[i][a] = x - static_cast<double>(piece_[i][a]);
       }

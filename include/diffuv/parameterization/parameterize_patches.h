@@ -259,7 +259,10 @@ std::vector<Patch_result<TriangleMesh>> parameterize_patches(const TriangleMesh&
     results[p].chart = atlas.add_chart(seg.patch_faces[p], std::move(charts[p].vertices), std::move(charts[p].uv));
     add_milliseconds[p] = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   }
-  // Each chart touches only its own rectangle and warps: in parallel.
+  // Each chart touches only its own rectangle and warps: in parallel, once
+  // the atlas's look-ups are built (a look-up after add_chart() builds them,
+  // which is not thread-safe).
+  atlas.prepare_lookups();
   internal::for_each_patch<TriangleMesh, VertexPointMap>(seg.number_of_patches(), options.threads,
                                                          [&](std::size_t p, auto&) {
     if(!results[p].status) return;
