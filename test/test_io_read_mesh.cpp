@@ -10,6 +10,7 @@
 #include "test_data.h"
 
 #include <diffuv/io/read_labels.h>
+#include <diffuv/io/internal/soup_to_mesh.h>
 #include <diffuv/io/read_mesh.h>
 #include <diffuv/parameterization/parameterize_disc.h>
 
@@ -20,6 +21,7 @@
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/manifoldness.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 
 #include <gtest/gtest.h>
 
@@ -33,6 +35,7 @@
 #include <iomanip>
 #include <limits>
 #include <map>
+#include <numeric>
 #include <random>
 #include <sstream>
 #include <string>
@@ -2003,6 +2006,162 @@ TEST_F(IoReadMesh, MoebiusStripIsRefused)
   EXPECT_NE(direction(f), 0);
   EXPECT_EQ(direction(f), direction(g)) << e.reason();
   EXPECT_GT(e.line(), 2u + 2 * n);
+}
+
+// ---------------------------------------------------------------------------
+// The soup built into a mesh in one pass (io/internal/soup_to_mesh.h): the
+// same arrays as CGAL's polygon_soup_to_polygon_mesh(), halfedge for halfedge.
+
+// Where two meshes differ ("" if nowhere): counts, points, and every
+// connectivity array of Surface_mesh.
+std::string first_difference(const Mesh& a, const Mesh& b)
+{
+  if(a.number_of_vertices() != b.number_of_vertices() || a.number_of_halfedges() != b.number_of_halfedges() ||
+     a.number_of_faces() != b.number_of_faces())
+    return "counts";
+  for(auto v : a.vertices()) {
+    if(a.point(v) != b.point(v)) return "point of vertex " + std::to_string(v.idx());
+    if(a.halfedge(v) != b.halfedge(v)) return "halfedge of vertex " + std::to_string(v.idx());
+  }
+  for(auto h : a.halfedges()) {
+    const std::string at = " of halfedge " + std::to_string(h.idx());
+    if(a.target(h) != b.target(h)) return "target" + at;
+    if(a.next(h) != b.next(h)) return "next" + at;
+    if(a.prev(h) != b.prev(h)) return "prev" + at;
+    if(a.face(h) != b.face(h)) return "face" + at;
+  }
+  for(auto f : a.faces())
+    if(a.halfedge(f) != b.halfedge(f)) return "halfedge of face " + std::to_string(f.idx());
+  return "";
+}
+
+// Builds the soup both ways; false if the one-pass builder refused it.
+bool expect_built_as_cgal_builds(const std::vector<Point_3>& points, const std::vector<std::vector<std::size_t>>& polygons,
+                                 const std::string& what)
+{
+  Mesh by_cgal, by_us;
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, polygons, by_cgal);
+  if(!diffuv::internal::soup_to_surface_mesh(points, polygons, by_us)) return false;
+  EXPECT_TRUE(by_us.is_valid(false)) << what;
+  EXPECT_EQ(first_difference(by_cgal, by_us), "") << what;
+  return true;
+}
+
+TEST(IoSoupToMesh, SameMeshAsCgalsBuilderOnRealMeshes)
+{
+  // Closed (cow), with a border (mushroom), three components (blobby_3cc),
+  // polygons of 3 to 12 corners (3torus, P, torus_quad, cube_quad).
+  for(const char* name : {"cow.off", "mushroom.off", "blobby_3cc.off", "3torus.off", "P.off", "torus_quad.off", "cube_quad.off"}) {
+    std::vector<Point_3> points;
+    std::vector<std::vector<std::size_t>> polygons;
+    ASSERT_TRUE(CGAL::IO::read_polygon_soup(diffuv_test::data_path(std::string("meshes/") + name), points, polygons)) << name;
+    ASSERT_TRUE(CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(polygons)) << name;
+    EXPECT_TRUE(expect_built_as_cgal_builds(points, polygons, name)) << name << " refused";
+  }
+}
+
+TEST(IoSoupToMesh, SameMeshAsCgalsBuilderOnShuffledSoupsWithHoles)
+{
+  // Soups made from real ones: polygons shuffled and their corners rotated,
+  // then some removed (holes), a renumbered copy of part of it added (a second
+  // component, isolated points), the points renumbered. The builders must
+  // agree wherever CGAL calls the soup a polygon mesh; the order in which
+  // polygons arrive is what decides CGAL's halfedge of each vertex.
+  std::mt19937 random(7);
+  std::size_t compared = 0, with_holes = 0, with_polygons = 0;
+  for(const char* name : {"cow.off", "mushroom.off", "3torus.off", "P.off", "cube_quad.off", "nefertiti.off"}) {
+    std::vector<Point_3> points0;
+    std::vector<std::vector<std::size_t>> polygons0;
+    ASSERT_TRUE(CGAL::IO::read_polygon_soup(diffuv_test::data_path(std::string("meshes/") + name), points0, polygons0)) << name;
+    for(int trial = 0; trial < 24; ++trial) {
+      std::vector<Point_3> points = points0;
+      std::vector<std::vector<std::size_t>> polygons = polygons0;
+      std::shuffle(polygons.begin(), polygons.end(), random);
+      for(auto& polygon : polygons) std::rotate(polygon.begin(), polygon.begin() + random() % polygon.size(), polygon.end());
+      const int kind = trial % 4;
+      if(kind >= 1)
+        for(std::size_t k = random() % (1 + polygons.size() / 10); k > 0 && polygons.size() > 1; --k)
+          polygons.erase(polygons.begin() + static_cast<std::ptrdiff_t>(random() % polygons.size()));
+      if(kind >= 2) {
+        points.emplace_back(9, 9, 9);  // isolated
+        const std::size_t offset = points.size();
+        points.insert(points.end(), points0.begin(), points0.end());
+        std::vector<std::vector<std::size_t>> copy;
+        for(const auto& polygon : polygons)
+          if(random() % 2) {
+            copy.push_back(polygon);
+            for(auto& v : copy.back()) v += offset;
+          }
+        polygons.insert(polygons.end(), copy.begin(), copy.end());
+        std::shuffle(polygons.begin(), polygons.end(), random);
+      }
+      if(kind == 3) {
+        std::vector<std::size_t> renumber(points.size());
+        std::iota(renumber.begin(), renumber.end(), std::size_t(0));
+        std::shuffle(renumber.begin(), renumber.end(), random);
+        std::vector<Point_3> moved(points.size());
+        for(std::size_t i = 0; i < points.size(); ++i) moved[renumber[i]] = points[i];
+        points = moved;
+        for(auto& polygon : polygons)
+          for(auto& v : polygon) v = renumber[v];
+      }
+      if(!CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(polygons)) continue;
+      const std::string what = std::string(name) + ", trial " + std::to_string(trial);
+      ASSERT_TRUE(expect_built_as_cgal_builds(points, polygons, what)) << what << " refused";
+      ++compared;
+      Mesh mesh;
+      diffuv::internal::soup_to_surface_mesh(points, polygons, mesh);
+      if(!CGAL::is_closed(mesh)) ++with_holes;
+      if(!CGAL::is_triangle_mesh(mesh)) ++with_polygons;
+    }
+  }
+  // Enough of each kind to mean something (about half the trials cut a
+  // vertex's fan in two and are not meshes).
+  EXPECT_GE(compared, 40u);
+  EXPECT_GE(with_holes, 15u);
+  EXPECT_GE(with_polygons, 10u);
+}
+
+TEST(IoSoupToMesh, RefusesWhatIsNotAMeshAndLeavesItToCgal)
+{
+  // A square of two triangles, then broken in each way the builder checks.
+  const std::vector<Point_3> points = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}};
+  using Soup = std::vector<std::vector<std::size_t>>;
+  EXPECT_TRUE(expect_built_as_cgal_builds(points, Soup{{0, 1, 2}, {0, 2, 3}}, "square"));
+  const std::vector<std::pair<const char*, Soup>> broken = {
+      {"an edge run the same way twice", Soup{{0, 1, 2}, {0, 1, 3}}},
+      {"an edge of three faces", Soup{{0, 1, 2}, {1, 0, 3}, {1, 0, 4}}},
+      {"a point used twice", Soup{{0, 1, 2, 1}}},
+      {"two corners", Soup{{0, 1}}},
+      {"two gaps at a vertex", Soup{{0, 1, 2}, {0, 3, 4}}},
+      {"a point out of range", Soup{{0, 1, 7}}}};
+  for(const auto& [what, polygons] : broken) {
+    Mesh mesh;
+    EXPECT_FALSE(diffuv::internal::soup_to_surface_mesh(points, polygons, mesh)) << what;
+    EXPECT_TRUE(mesh.is_empty()) << what;
+  }
+  // Two closed fans on one vertex (two tetrahedra sharing an apex), and a
+  // closed fan with an open one: no border gap is doubled, but the walk
+  // around the apex misses polygons.
+  const std::vector<Point_3> cones = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {-1, 0, 0}, {0, -1, 0}, {0, 0, -1}};
+  const Soup tetrahedron = {{0, 1, 2}, {0, 2, 3}, {0, 3, 1}, {1, 3, 2}};
+  Soup two_tetrahedra = tetrahedron;
+  for(const auto& t : tetrahedron) two_tetrahedra.push_back({t[0] == 0 ? 0 : t[0] + 3, t[1] == 0 ? 0 : t[1] + 3, t[2] == 0 ? 0 : t[2] + 3});
+  Soup tetrahedron_and_fan = tetrahedron;
+  tetrahedron_and_fan.push_back({0, 4, 5});
+  tetrahedron_and_fan.push_back({0, 5, 6});
+  for(const Soup& polygons : {two_tetrahedra, tetrahedron_and_fan}) {
+    Mesh mesh;
+    EXPECT_FALSE(diffuv::internal::soup_to_surface_mesh(cones, polygons, mesh)) << polygons.size() << " polygons";
+    EXPECT_TRUE(mesh.is_empty());
+  }
+  // soup_to_mesh() then gives CGAL's answer: two triangles that share vertex 0
+  // only become two fans there.
+  Mesh by_cgal, by_us;
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, broken[4].second, by_cgal);
+  diffuv::internal::soup_to_mesh(points, broken[4].second, by_us);
+  EXPECT_EQ(first_difference(by_cgal, by_us), "");
+  EXPECT_EQ(by_us.number_of_faces(), 2u);
 }
 
 } // namespace

@@ -5,6 +5,7 @@
 
 #include <diffuv/core/error.h>
 #include <diffuv/io/internal/mesh_scan.h>
+#include <diffuv/io/internal/soup_to_mesh.h>
 
 #include <CGAL/exceptions.h>
 #include <CGAL/Kernel_traits.h>
@@ -112,11 +113,10 @@ std::vector<std::size_t> triangulate_polygons(const std::string& path, const std
   using Polygon_map = boost::vector_property_map<std::size_t, typename boost::property_map<TriangleMesh, CGAL::face_index_t>::const_type>;
   Polygon_map polygon_of(get(boost::face_index, mesh));
   auto build = [&](bool use_cdt) {
-    CGAL::clear(mesh);
-    PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
+    soup_to_mesh(points, polygons, mesh);
     vertex_of.assign(vertices(mesh).begin(), vertices(mesh).end());
     const std::vector<face_descriptor> face_of(faces(mesh).begin(), faces(mesh).end());
-    polygon_of = Polygon_map(get(boost::face_index, mesh));
+    polygon_of = Polygon_map(static_cast<unsigned>(polygons.size()), get(boost::face_index, mesh));
     for(std::size_t j = 0; j < polygons.size(); ++j)
       put(polygon_of, face_of[j], j);
     std::size_t current_polygon = 0;
