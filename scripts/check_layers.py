@@ -28,6 +28,9 @@ LAYERS = [
 ]
 OPTIONAL = {"render"}  # the diffuv::render target (stb); the core target must not include it
 UMBRELLA = "diffuv.h"
+# Headers a program includes in exactly one source file (they define the
+# global operator new): public, but never in the umbrella header.
+INCLUDE_ONCE = {"core/huge_page_allocation.h"}
 
 INCLUDE = re.compile(r'^\s*#\s*include\s*<diffuv/([^>]+)>', re.M)
 
@@ -83,6 +86,9 @@ def main():
         listed = set(INCLUDE.findall(f.read()))
     public = {h.replace(os.sep, "/") for h in headers
               if os.sep in h and h.split(os.sep)[0] not in OPTIONAL | {"internal"} and os.sep + "internal" + os.sep not in h}
+    for once in sorted(INCLUDE_ONCE & listed):
+        problems.append("%s: includes <diffuv/%s>, which a program includes in one source file only" % (UMBRELLA, once))
+    public -= INCLUDE_ONCE
     for missing in sorted(public - listed):
         problems.append("%s: does not include <diffuv/%s>" % (UMBRELLA, missing))
     for extra in sorted(listed - public):

@@ -3,7 +3,9 @@
 // Includes every public header of the core target (diffuv::diffuv), layer by
 // layer, lowest first (doc/design.md, "Layers"; scripts/check_layers.py
 // checks that this list is complete). Not included: render/, the optional
-// diffuv::render target (pictures, PNG files and the packed atlas, through stb).
+// diffuv::render target (pictures, PNG files and the packed atlas, through stb),
+// and core/huge_page_allocation.h, which a program includes in one source file
+// (it replaces the global operator new).
 //
 //   core/             the vocabulary: Status and the error types, the four sides, colours and the label palette
 //   io/               reading: meshes (OFF, OBJ, PLY, STL), labels, painted regions, corners, colours; safe output files
