@@ -143,6 +143,45 @@ TEST_F(LabelsPainted, CoffVertexColors)
   EXPECT_EQ(diffuv::read_painted_labels(diffuv_test::data_path("meshes/cow.off")).source, Label_source::none);
 }
 
+TEST_F(LabelsPainted, ReadReportSaysWhenTheFileCanHoldNoRegions)
+{
+  // read_triangle_mesh() says where read_painted_labels() would find nothing
+  // (so the tool skips that second read): OBJ, STL and OFF without a colour.
+  // Wherever painted regions are found, the report must not have said no.
+  const std::string plain = write("plain.off", "OFF\n4 2 0\n" + square_points + "3 0 1 2\n3 0 2 3\n");
+  const std::string face_colors =
+    write("faces.off", "OFF\n4 2 0\n" + square_points + "3 0 1 2 200 10 10 255\n3 0 2 3 20 20 200 255\n");
+  const std::string vertex_colors = write("c.off", "COFF\n4 2 0\n0 0 0 1.0 0.0 0.0 1.0\n1 0 0 1.0 0.0 0.0 1.0\n"
+                                                   "1 1 0 0.0 0.0 1.0 1.0\n0 1 0 0 0 1.0 1.0\n3 0 1 2\n3 0 2 3\n");
+  const std::string obj = write("t.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3\nf 1 3 4\n");
+  const std::vector<std::pair<std::string, bool>> files = {
+      {plain, false},
+      {face_colors, true},
+      {vertex_colors, true},
+      {obj, false},
+      {diffuv_test::data_path("meshes/cow.off"), false},
+      {diffuv_test::data_path("meshes/sphere.stl"), false},
+      {diffuv_test::data_path("meshes/mesh_with_colors.off"), true},
+      {diffuv_test::data_path("meshes/colored_tetra.ply"), true}};
+  for(const auto& [file, may_hold] : files) {
+    Mesh mesh;
+    const diffuv::Mesh_read_report report = diffuv::read_triangle_mesh(file, mesh);
+    EXPECT_EQ(report.may_hold_regions, may_hold) << file;
+    if(!report.may_hold_regions) EXPECT_EQ(diffuv::read_painted_labels(file).source, Label_source::none) << file;
+  }
+  // And over CGAL's OFF meshes: a file without colours paints nothing.
+  std::size_t without = 0;
+  for(const char* name : {"elephant.off", "mushroom.off", "nefertiti.off", "3torus.off", "mesh_with_colors.off"}) {
+    const std::string file = diffuv_test::data_path(std::string("meshes/") + name);
+    Mesh mesh;
+    const diffuv::Mesh_read_report report = diffuv::read_triangle_mesh(file, mesh);
+    if(report.may_hold_regions) continue;
+    ++without;
+    EXPECT_EQ(diffuv::read_painted_labels(file).source, Label_source::none) << name;
+  }
+  EXPECT_EQ(without, 4u);
+}
+
 TEST_F(LabelsPaintedErrors, Off)
 {
   const std::string head = "OFF\n4 2 0\n" + square_points;

@@ -194,7 +194,7 @@ inline Input_mesh read_input(const std::string& path, const Patch_cli_options& o
     polygon_labels = diffuv::read_face_labels(o.labels, in.report.faces_in_file);
     in.label_source = "labels from " + o.labels;
     in.labels_path = o.labels;
-  } else if(paint.read && o.regions_from != "none") {
+  } else if(paint.read && o.regions_from != "none" && in.report.may_hold_regions) {
     diffuv::Painted_labels painted = diffuv::read_painted_labels(path, std::string(), o.regions_from != "labels");
     if(painted.source == diffuv::Label_source::vertex_colors && o.regions_from == "auto") {
       // A coloured scan or a transferred field is data, not regions.

@@ -77,6 +77,11 @@ struct Mesh_read_report {
   /// the mesh, the point of the file it is (vertices past the file's points
   /// are copies).
   std::vector<std::size_t> point_of_vertex;
+  /// False where `read_painted_labels()` can find no region in the file: an
+  /// OBJ or STL file, or an OFF file without a colour (no `C` in its header,
+  /// no colour on any vertex or face line). A caller can then skip that
+  /// second read of the file (on a 1M-vertex OFF file, most of a second).
+  bool may_hold_regions = true;
 
   /// The vertex of the mesh that stands for point `i` of the file.
   std::size_t vertex_of(std::size_t i) const { return i < vertex_of_point.size() ? vertex_of_point[i] : i; }
@@ -242,6 +247,7 @@ Mesh_read_report read_triangle_mesh(const std::string& path, TriangleMesh& mesh,
         throw Input_error(path, text_scan.error_line, text_scan.error);
     }
   }
+  const bool may_hold_regions = format == Mesh_format::ply || (format == Mesh_format::off && text_scan.colors);
 
   // The lines of elements, for messages: only the text formats have them.
   internal::Line_locator locate([&]() -> internal::Text_mesh_scan { return std::move(text_scan); });
@@ -275,6 +281,7 @@ Mesh_read_report read_triangle_mesh(const std::string& path, TriangleMesh& mesh,
     internal::check_polygon_soup(path, points, polygons, locate, format == Mesh_format::obj, options.repair);
 
   Mesh_read_report report;
+  report.may_hold_regions = may_hold_regions;
   report.vertices = points.size();
   report.faces_in_file = polygons.size();
   internal::Soup_repair_map repaired;

@@ -26,6 +26,9 @@ struct Text_mesh_scan {
   std::vector<std::size_t> face_line;
   std::size_t error_line = 0;
   std::string error; ///< empty if no problem was found
+  /// (text OFF, scanned whole) the header announces vertex colours (`C`), or
+  /// some vertex or face has colour numbers: what `read_off_paint()` reads
+  bool colors = false;
 };
 
 /// The points and polygons of a mesh file, as read.

@@ -486,6 +486,8 @@ inline Text_mesh_scan scan_off(std::string_view text, bool header_only, Polygon_
       const std::string problem = color_problem(entries, cgal_size + 1, entries.size() - cgal_size - 1, face_colored);
       if(!problem.empty())
         return fail(line, "face " + std::to_string(j) + " " + problem);
+    } else if(numbers.size() > size + 1 || entries.size() > cgal_size + 1) {
+      face_colored = true;  // numbers after the indices: colours to read_off_paint() (MeshLab writes them under "OFF")
     }
     if(soup) {
       std::vector<std::size_t> polygon(cgal_size);
@@ -496,6 +498,7 @@ inline Text_mesh_scan scan_off(std::string_view text, bool header_only, Polygon_
   }
   if(soup)
     soup->complete = true;
+  scan.colors = colors || vertex_colored || face_colored;
   return scan;
 }
 
