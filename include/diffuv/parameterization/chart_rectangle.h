@@ -406,6 +406,23 @@ Chart_drawing fit_chart_drawing(const Uv_atlas<TriangleMesh, Kernel>& atlas, std
   return result;
 }
 
+/// Puts chart c on its rectangle: `size` (e.g. from
+/// `stretch_optimal_rectangle()`) as it is with `options.pieces` 0, else the
+/// aspect and warps `fit_chart_drawing()` finds from it. What the default
+/// pipeline does to every chart it maps.
+template <class TriangleMesh, class Kernel, class VertexPointMap>
+void draw_chart(Uv_atlas<TriangleMesh, Kernel>& atlas, std::size_t c, VertexPointMap vpm, std::array<double, 2> size,
+                const Chart_drawing_options& options = Chart_drawing_options())
+{
+  if(options.pieces == 0) {
+    atlas.set_chart_size(c, size[0], size[1]);
+    return;
+  }
+  Chart_drawing drawing = fit_chart_drawing(atlas, c, vpm, size, options);
+  atlas.set_chart_size(c, drawing.size[0], drawing.size[1]);
+  atlas.set_chart_warp(c, std::move(drawing.u), std::move(drawing.v));
+}
+
 } // namespace diffuv
 
 #endif // DIFFUV_PARAMETERIZATION_CHART_RECTANGLE_H

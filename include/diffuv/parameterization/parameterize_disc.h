@@ -139,13 +139,7 @@ Status parameterize_disc(const TriangleMesh& tm, VertexPointMap vpm,
   const std::size_t chart = atlas.add_chart(std::move(chart_faces), std::move(chart_vertices), std::move(chart_uv));
   const auto size = stretch_optimal_rectangle(tm, vpm, atlas.chart(chart).faces, atlas.chart_uv_map(chart),
                                               side_length_rectangle(four, vpm));
-  if(options.drawing.pieces > 0) {
-    Chart_drawing drawing = fit_chart_drawing(atlas, chart, vpm, size, options.drawing);
-    atlas.set_chart_size(chart, drawing.size[0], drawing.size[1]);
-    atlas.set_chart_warp(chart, std::move(drawing.u), std::move(drawing.v));
-  } else {
-    atlas.set_chart_size(chart, size[0], size[1]);
-  }
+  draw_chart(atlas, chart, vpm, size, options.drawing);
   r.sides = std::move(four);
   return Status();
 }

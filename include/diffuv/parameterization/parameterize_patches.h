@@ -270,13 +270,7 @@ std::vector<Patch_result<TriangleMesh>> parameterize_patches(const TriangleMesh&
     const std::size_t c = results[p].chart;
     const auto size = stretch_optimal_rectangle(tm, vpm, atlas.chart(c).faces, atlas.chart_uv_map(c),
                                                 side_length_rectangle(results[p].sides, vpm));
-    if(options.drawing.pieces > 0) {
-      Chart_drawing drawing = fit_chart_drawing(atlas, c, vpm, size, options.drawing);
-      atlas.set_chart_size(c, drawing.size[0], drawing.size[1]);
-      atlas.set_chart_warp(c, std::move(drawing.u), std::move(drawing.v));
-    } else {
-      atlas.set_chart_size(c, size[0], size[1]);
-    }
+    draw_chart(atlas, c, vpm, size, options.drawing);
     results[p].milliseconds += add_milliseconds[p] +
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   });

@@ -26,6 +26,55 @@
 
 namespace diffuv {
 
+namespace internal {
+
+// The faces reached from `start` across edges, breadth first, `start` first:
+// a neighbour g joins when `join(face index of g)` says so (and marks it
+// taken). One search for patches_from_labels() and connected_parts(), so
+// that both give the same components with their faces in the same order.
+template <class TriangleMesh, class Join>
+std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>
+grow_component(const TriangleMesh& tm, typename boost::graph_traits<TriangleMesh>::face_descriptor start, Join join)
+{
+  auto findex = get(boost::face_index, tm);
+  std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> queue = {start};
+  for(std::size_t q = 0; q < queue.size(); ++q)
+    for(auto h : CGAL::halfedges_around_face(halfedge(queue[q], tm), tm)) {
+      const auto g = face(opposite(h, tm), tm);
+      if(g != boost::graph_traits<TriangleMesh>::null_face() && join(static_cast<std::size_t>(get(findex, g))))
+        queue.push_back(g);
+    }
+  return queue;
+}
+
+// The canonical order of components: by `labels` first if given (one per
+// component), then by decreasing 3D area, then by lowest face index.
+template <class TriangleMesh, class VertexPointMap>
+std::vector<std::size_t>
+canonical_component_order(const TriangleMesh& tm, VertexPointMap vpm,
+                          const std::vector<std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>>& members,
+                          const std::vector<int>* labels = nullptr)
+{
+  auto findex = get(boost::face_index, tm);
+  std::vector<double> area(members.size(), 0.);
+  std::vector<std::size_t> lowest(members.size(), (std::numeric_limits<std::size_t>::max)());
+  for(std::size_t c = 0; c < members.size(); ++c)
+    for(auto f : members[c]) {
+      area[c] += CGAL::to_double(CGAL::Polygon_mesh_processing::face_area(f, tm, CGAL::parameters::vertex_point_map(vpm)));
+      lowest[c] = (std::min)(lowest[c], static_cast<std::size_t>(get(findex, f)));
+    }
+  std::vector<std::size_t> order(members.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    if(labels && (*labels)[a] != (*labels)[b]) return (*labels)[a] < (*labels)[b];
+    if(area[a] != area[b]) return area[a] > area[b];
+    return lowest[a] < lowest[b];
+  });
+  return order;
+}
+
+} // namespace internal
+
 /// Groups faces into patches: the connected components (across edges) of
 /// faces with equal labels. Faces labelled `ignore_label` get no patch.
 ///
@@ -52,40 +101,18 @@ Segmentation<TriangleMesh> patches_from_labels(const TriangleMesh& tm, VertexPoi
   for(std::size_t start = 0; start < face_of.size(); ++start) {
     if(component[start] != none || face_labels[start] == ignore_label) continue;
     const std::size_t c = members.size();
-    members.emplace_back();
-    labels.push_back(face_labels[start]);
-    std::vector<std::size_t> queue = {start};
+    const int label = face_labels[start];
+    labels.push_back(label);
     component[start] = c;
-    for(std::size_t q = 0; q < queue.size(); ++q) {
-      const face_descriptor f = face_of[queue[q]];
-      members[c].push_back(f);
-      for(auto h : CGAL::halfedges_around_face(halfedge(f, tm), tm)) {
-        const auto g = face(opposite(h, tm), tm);
-        if(g == boost::graph_traits<TriangleMesh>::null_face()) continue;
-        const std::size_t gi = get(findex, g);
-        if(component[gi] == none && face_labels[gi] == labels[c]) {
-          component[gi] = c;
-          queue.push_back(gi);
-        }
-      }
-    }
+    members.push_back(internal::grow_component(tm, face_of[start], [&](std::size_t g) {
+      if(component[g] != none || face_labels[g] != label) return false;
+      component[g] = c;
+      return true;
+    }));
   }
 
   // Canonical order: label, then decreasing area, then lowest face index.
-  std::vector<double> area(members.size(), 0.);
-  std::vector<std::size_t> lowest(members.size(), none);
-  for(std::size_t c = 0; c < members.size(); ++c)
-    for(face_descriptor f : members[c]) {
-      area[c] += CGAL::to_double(CGAL::Polygon_mesh_processing::face_area(f, tm, CGAL::parameters::vertex_point_map(vpm)));
-      lowest[c] = (std::min)(lowest[c], static_cast<std::size_t>(get(findex, f)));
-    }
-  std::vector<std::size_t> order(members.size());
-  std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    if(labels[a] != labels[b]) return labels[a] < labels[b];
-    if(area[a] != area[b]) return area[a] > area[b];
-    return lowest[a] < lowest[b];
-  });
+  const std::vector<std::size_t> order = internal::canonical_component_order(tm, vpm, members, &labels);
 
   Segmentation<TriangleMesh> seg;
   seg.face_patch.assign(num_faces(tm), none);
@@ -130,36 +157,15 @@ connected_parts(const TriangleMesh& tm, VertexPointMap vpm,
   for(const auto& [start, start_face] : by_index) {
     if(marks[start] != unvisited) continue;
     const std::size_t c = members.size();
-    members.emplace_back();
-    std::vector<face_descriptor>& queue = members[c];
-    queue.push_back(start_face);
     marks[start] = c;
-    for(std::size_t q = 0; q < queue.size(); ++q)
-      for(auto h : CGAL::halfedges_around_face(halfedge(queue[q], tm), tm)) {
-        const auto g = face(opposite(h, tm), tm);
-        if(g == boost::graph_traits<TriangleMesh>::null_face()) continue;
-        const std::size_t gi = get(findex, g);
-        if(marks[gi] == unvisited) {
-          marks[gi] = c;
-          queue.push_back(g);
-        }
-      }
+    members.push_back(internal::grow_component(tm, start_face, [&](std::size_t g) {
+      if(marks[g] != unvisited) return false;
+      marks[g] = c;
+      return true;
+    }));
   }
   for(const auto& entry : by_index) marks[entry.first] = none;
-
-  std::vector<double> area(members.size(), 0.);
-  std::vector<std::size_t> lowest(members.size(), none);
-  for(std::size_t c = 0; c < members.size(); ++c)
-    for(face_descriptor f : members[c]) {
-      area[c] += CGAL::to_double(CGAL::Polygon_mesh_processing::face_area(f, tm, CGAL::parameters::vertex_point_map(vpm)));
-      lowest[c] = (std::min)(lowest[c], static_cast<std::size_t>(get(findex, f)));
-    }
-  std::vector<std::size_t> order(members.size());
-  std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    if(area[a] != area[b]) return area[a] > area[b];
-    return lowest[a] < lowest[b];
-  });
+  const std::vector<std::size_t> order = internal::canonical_component_order(tm, vpm, members);
   std::vector<std::vector<face_descriptor>> parts;
   parts.reserve(order.size());
   for(std::size_t c : order) parts.push_back(std::move(members[c]));
