@@ -327,6 +327,41 @@ TEST(DiscPatches, ADiscIsLaidOutWhenOneSquareWouldNotServeIt)
 }
 
 
+// A disc kept whole is mapped by the judge exactly as the corner search maps
+// its rule's corners (fast marching, the repair, no warps), so the search
+// takes the judge's score instead of mapping the disc again: the same corners
+// either way (nefertiti, and quad.off: two triangles, four border vertices).
+// And the score it is given is the one it uses: told that nefertiti's map by
+// the rule is not one-to-one, it takes a candidate's corners.
+TEST(DiscPatches, TheCornerSearchTakesTheJudgesScoreOfADiscKeptWhole)
+{
+  using diffuv_test::Mesh;
+  using Judge = diffuv::Raw_map_judge<Mesh, decltype(std::declval<const Mesh&>().points())>;
+  for(const char* name : {"nefertiti.off", "quad.off"}) {
+    const Mesh& m = diffuv_test::cgal_mesh(name);
+    const diffuv::Segmentation<Mesh> whole = diffuv::patches_from_labels(m, m.points(), std::vector<int>(num_faces(m), 0));
+    ASSERT_EQ(whole.number_of_patches(), 1u) << name;
+    const Judge judge(m, m.points());
+    ASSERT_TRUE(judge.whole_patches_to_lay_out(whole, {1}).empty()) << name << " is laid out";
+    diffuv::Segmentation<Mesh> by_judge = whole, by_search = whole, told_bad = whole;
+    const std::size_t set_by_judge = judge.choose_corners(by_judge);
+    diffuv::Fallback_corner_options options = diffuv::Raw_map_judge_options().corners;
+    const std::size_t set_by_search = diffuv::choose_fallback_corners(m, m.points(), by_search, options);
+    EXPECT_EQ(set_by_judge, set_by_search) << name;
+    EXPECT_EQ(by_judge.patch_corners, by_search.patch_corners) << name;
+    if(std::string(name) != "nefertiti.off") continue;  // quad.off: its one choice of corners is the rule's
+    std::size_t asked = 0;
+    const std::size_t set_told_bad = diffuv::choose_fallback_corners(m, m.points(), told_bad, options, [&](std::size_t, double& score) {
+      ++asked;
+      score = std::numeric_limits<double>::infinity();
+      return true;
+    });
+    EXPECT_EQ(asked, 1u) << name;
+    EXPECT_EQ(set_told_bad, 1u) << name;
+    ASSERT_TRUE(told_bad.corners(0)) << name;
+  }
+}
+
 // The library's one call, `diffusion_patches()`, gives the layout the tool
 // maps (refined by the raw-map judge): on cow, the fold repair moves a
 // quarter of the vertices or fewer than on the unrefined layout

@@ -28,6 +28,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <functional>
 #include <limits>
 #include <map>
 #include <memory>
@@ -204,9 +205,15 @@ std::vector<double> estimate_corner_choices(const TriangleMesh& tm, VertexPointM
 /// (`internal::estimate_corner_choices()`) and the best `mapped_candidates`
 /// are mapped. The choice does not depend on the number of threads.
 /// \returns the number of patches whose corners were set
+///
+/// `known_rule_score(p, score)`, if given, may supply the score of patch p's
+/// map by the rule (its L2 stretch, infinite if not one-to-one), measured
+/// exactly as here (fast marching, the repair, no warps), so that it is not
+/// mapped again: `Raw_map_judge` has mapped the discs it kept whole.
 template <class TriangleMesh, class VertexPointMap>
 std::size_t choose_fallback_corners(const TriangleMesh& tm, VertexPointMap vpm, Segmentation<TriangleMesh>& seg,
-                                    const Fallback_corner_options& options = Fallback_corner_options())
+                                    const Fallback_corner_options& options = Fallback_corner_options(),
+                                    const std::function<bool(std::size_t, double&)>& known_rule_score = {})
 {
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
   using Corners = std::array<vertex_descriptor, 4>;
@@ -244,7 +251,24 @@ std::size_t choose_fallback_corners(const TriangleMesh& tm, VertexPointMap vpm, 
       rule.push_back(seg.patch_corners[p]);
     }
   if(fallback.empty()) return 0;
-  const auto by_rule = score(fallback, rule);
+  // A patch's map does not depend on which other patches are mapped with it
+  // (the others keep their faces' patch numbers), so those with a known score
+  // are left out.
+  std::vector<double> by_rule(fallback.size(), std::numeric_limits<double>::infinity());
+  {
+    std::vector<std::size_t> unknown, at;
+    std::vector<Corners> unknown_corners;
+    for(std::size_t i = 0; i < fallback.size(); ++i) {
+      if(known_rule_score && known_rule_score(fallback[i], by_rule[i])) continue;
+      unknown.push_back(fallback[i]);
+      unknown_corners.push_back(rule[i]);
+      at.push_back(i);
+    }
+    if(!unknown.empty()) {
+      const std::vector<double> scored = score(unknown, unknown_corners);
+      for(std::size_t t = 0; t < at.size(); ++t) by_rule[at[t]] = scored[t];
+    }
+  }
   std::vector<std::size_t> bad;
   std::vector<double> best, by_rule_score;
   std::vector<Corners> best_corners;
@@ -471,6 +495,9 @@ public:
       if(p >= candidates.size() || !candidates[p] || !results[p].status) continue;
       const std::size_t c = results[p].chart;
       const Distortion_summary d = measure_distortion(*tm_, vpm_, atlas.chart(c).faces, atlas.chart_texture_map(c));
+      // The corner search (choose_corners()) would map this disc by the rule
+      // again, exactly so: keep its score.
+      whole_scores_->insert_or_assign(faces_key(seg, p), d.injective() ? d.stretch_l2 : std::numeric_limits<double>::infinity());
       const double moved = static_cast<double>(results[p].repair.moved_vertices + results[p].repair.moved_border_vertices);
       if(!d.injective() || d.stretch_l2 > options_.max_stretch || d.area_mean > options_.max_area ||
          moved > options_.max_moved * static_cast<double>(atlas.chart(c).vertices.size()))
@@ -486,7 +513,16 @@ public:
   {
     Fallback_corner_options o = options_.corners;
     o.threads = options_.threads;
-    return choose_fallback_corners(*tm_, vpm_, seg, o);
+    // A disc kept whole (no neighbour, so its map depends on its faces alone)
+    // was mapped by whole_patches_to_lay_out() as the search maps the rule.
+    const auto known = [&](std::size_t p, double& score) {
+      if(seg.corners(p) || whole_scores_->empty()) return false;
+      const auto found = whole_scores_->find(faces_key(seg, p));
+      if(found == whole_scores_->end()) return false;
+      score = found->second;
+      return true;
+    };
+    return choose_fallback_corners(*tm_, vpm_, seg, o, known);
   }
 
 private:
@@ -500,11 +536,21 @@ private:
     return key;
   }
   using Verdicts = std::unordered_map<std::vector<std::size_t>, bool, internal::Index_list_hash>;
+  // A patch by its faces alone (in order).
+  std::vector<std::size_t> faces_key(const Segmentation<TriangleMesh>& seg, std::size_t p) const
+  {
+    std::vector<std::size_t> key;
+    key.reserve(seg.patch_faces[p].size());
+    for(auto f : seg.patch_faces[p]) key.push_back(get(get(boost::face_index, *tm_), f));
+    return key;
+  }
+  using Scores = std::unordered_map<std::vector<std::size_t>, double, internal::Index_list_hash>;
 
   const TriangleMesh* tm_;
   VertexPointMap vpm_;
   Raw_map_judge_options options_;
   std::shared_ptr<Verdicts> verdicts_;  // true: to refine
+  std::shared_ptr<Scores> whole_scores_ = std::make_shared<Scores>();  // the rule's L2 of discs judged whole
 };
 
 } // namespace diffuv
