@@ -478,7 +478,10 @@ public:
   /// not returned: a layout would not help it). Called by `disc_patches()` about the
   /// components that are discs: a disc whose raw map folds a little but whose
   /// repaired map is good (a cylinder locally refined: 22 of 8,000 vertices
-  /// moved, L2 1.007) stays whole. \returns positions, in increasing order
+  /// moved, L2 1.007) stays whole. The candidates must be whole components
+  /// (no neighbouring patch): each one's score is kept, by its faces, for
+  /// `choose_corners()`, which then does not map it again.
+  /// \returns positions, in increasing order
   std::vector<std::size_t> whole_patches_to_lay_out(const Segmentation<TriangleMesh>& seg, const std::vector<char>& candidates) const
   {
     const std::size_t n = seg.number_of_patches();
