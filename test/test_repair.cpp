@@ -5,6 +5,7 @@
 #include <diffuv/metrics/distortion.h>
 #include <diffuv/parameterization/parameterize_disc.h>
 #include <diffuv/parameterization/repair_folds.h>
+#include <diffuv/parameterization/internal/repair_patch.h>
 
 #include <gtest/gtest.h>
 
@@ -468,6 +469,46 @@ TEST(FlatTriangles, AutomaticCornersPutACornerOnTheEarsTip)
   report = disc_report.repair;
   EXPECT_EQ(report.flat_triangles, 0u);
   EXPECT_TRUE(diffuv::measure_distortion(m, m.points(), faces(m), atlas.vertex_uv_map()).injective());
+}
+
+} // namespace
+
+namespace {
+
+// The repair's lists around each vertex, kept in one array: the faces around
+// each vertex in increasing order and its neighbours, sorted and without
+// repeats, as CGAL's circulators give them on cow.
+TEST(Repair, RepairPatchListsTheFacesAndNeighboursAroundEachVertex)
+{
+  const Mesh& cow = cgal_mesh("cow.off");
+  diffuv::internal::Repair_patch<Mesh, Point_3> p;
+  const std::size_t n = num_vertices(cow);
+  p.vertex.resize(n);
+  for(auto f : faces(cow)) {
+    std::array<std::size_t, 3> t{};
+    std::size_t k = 0;
+    for(auto v : CGAL::vertices_around_face(halfedge(f, cow), cow)) t[k++] = static_cast<std::size_t>(v.idx());
+    p.triangle.push_back(t);
+  }
+  p.find_faces_of();
+  p.find_rings();
+  ASSERT_EQ(p.faces_of.size(), n);
+  ASSERT_EQ(p.ring.size(), n);
+  std::size_t wrong_faces = 0, wrong_rings = 0;
+  for(auto v : vertices(cow)) {
+    std::vector<std::size_t> around, neighbours;
+    for(auto f : CGAL::faces_around_target(halfedge(v, cow), cow))
+      if(f != Mesh::null_face()) around.push_back(static_cast<std::size_t>(f.idx()));
+    for(auto w : CGAL::vertices_around_target(halfedge(v, cow), cow)) neighbours.push_back(static_cast<std::size_t>(w.idx()));
+    std::sort(around.begin(), around.end());
+    std::sort(neighbours.begin(), neighbours.end());
+    const auto faces_listed = p.faces_of[v.idx()];
+    const auto ring_listed = p.ring[v.idx()];
+    wrong_faces += !std::equal(around.begin(), around.end(), faces_listed.begin(), faces_listed.end());
+    wrong_rings += !std::equal(neighbours.begin(), neighbours.end(), ring_listed.begin(), ring_listed.end());
+  }
+  EXPECT_EQ(wrong_faces, 0u);
+  EXPECT_EQ(wrong_rings, 0u);
 }
 
 } // namespace

@@ -121,7 +121,6 @@ Status repair_folds(const TriangleMesh& tm, VertexPointMap vpm,
   p.u.resize(n);
   p.v.resize(n);
   p.side_mask.assign(n, 0);
-  p.faces_of.resize(n);
   for(vertex_descriptor vd : vertices(tm)) {
     const std::size_t i = get(index, vd);
     p.vertex[i] = vd;
@@ -140,10 +139,10 @@ Status repair_folds(const TriangleMesh& tm, VertexPointMap vpm,
       ++k;
     }
     if(k != 3) return Status(Status_code::not_triangle_mesh, "a face of the patch has " + std::to_string(k) + " vertices");
-    for(std::size_t i : t) p.faces_of[i].push_back(p.triangle.size());
     p.flat.push_back((p.side_mask[t[0]] & p.side_mask[t[1]] & p.side_mask[t[2]]) != 0);
     p.triangle.push_back(t);
   }
+  p.find_faces_of();
   p.mark_flat_interior_groups();
   r.flat_triangles = static_cast<std::size_t>(std::count(p.flat.begin(), p.flat.end(), true));
   const std::vector<double> u0 = p.u, v0 = p.v;

@@ -20,6 +20,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <limits>
 #include <utility>
@@ -38,6 +39,38 @@ inline bool positive_triangle(const std::array<std::size_t, 3>& t, const std::ve
   return !is_degenerate_area(a, total) && a > 0 && CGAL::orientation(uv_t[0], uv_t[1], uv_t[2]) == CGAL::LEFT_TURN;
 }
 
+/// Lists of indices, one per vertex, in one array (compressed rows): on a
+/// 1.1M-vertex patch a vector per vertex cost a million allocations, for the
+/// triangles around the vertices and again for their neighbours.
+struct Index_lists {
+  std::vector<std::size_t> offsets{0};  // list i is items[offsets[i], offsets[i + 1])
+  std::vector<std::size_t> items;
+
+  struct List {
+    const std::size_t* first;
+    const std::size_t* last;
+    const std::size_t* begin() const { return first; }
+    const std::size_t* end() const { return last; }
+    bool empty() const { return first == last; }
+    std::size_t size() const { return static_cast<std::size_t>(last - first); }
+  };
+  List operator[](std::size_t i) const { return {items.data() + offsets[i], items.data() + offsets[i + 1]}; }
+  std::size_t size() const { return offsets.size() - 1; }
+
+  /// Lists of `n` items made of the pairs (list, value) that `each_pair(add)`
+  /// gives to `add`, twice in the same order: values in that order within a list.
+  template <class EachPair>
+  void assign(std::size_t n, EachPair each_pair)
+  {
+    offsets.assign(n + 1, 0);
+    each_pair([&](std::size_t list, std::size_t) { ++offsets[list + 1]; });
+    for(std::size_t i = 0; i < n; ++i) offsets[i + 1] += offsets[i];
+    items.resize(offsets[n]);
+    std::vector<std::size_t> next(offsets.begin(), offsets.end() - 1);
+    each_pair([&](std::size_t list, std::size_t value) { items[next[list]++] = value; });
+  }
+};
+
 /// The vertices of a patch by index, their sides, the patch's triangles, and
 /// the map being repaired.
 template <class TriangleMesh, class Point_3>
@@ -50,9 +83,9 @@ struct Repair_patch {
   std::vector<double> u, v;                       // by index: the map
   std::vector<std::uint8_t> side_mask;            // bit s set: on side s (in the order of `Side`)
   std::vector<Triangle> triangle;
-  std::vector<std::vector<std::size_t>> faces_of; // triangles around each vertex
+  Index_lists faces_of;                           // triangles around each vertex, in increasing order (`find_faces_of()`)
   std::vector<bool> flat;                         // flat in any map onto the square
-  std::vector<std::vector<std::size_t>> ring;     // neighbours of each vertex (`find_rings()`)
+  Index_lists ring;                               // neighbours of each vertex, in increasing order (`find_rings()`)
   std::vector<bool> bad_face, bad_vertex;         // local defects (`find_defects()`)
   std::vector<bool> thin;                         // bent triangles (`find_thin()`)
   std::array<double, 2> rectangle{{1., 1.}};      // the chart's rectangle, for the bends
@@ -167,19 +200,37 @@ struct Repair_patch {
     return std::make_pair(count, worst);
   }
 
+  /// Fills `faces_of` from `triangle`.
+  void find_faces_of()
+  {
+    faces_of.assign(size(), [&](auto add) {
+      for(std::size_t f = 0; f < triangle.size(); ++f)
+        for(std::size_t i : triangle[f]) add(i, f);
+    });
+  }
+
   /// Fills `ring`: the neighbours of each vertex, for growing regions.
   void find_rings()
   {
-    ring.assign(size(), {});
-    for(const auto& t : triangle)
-      for(int k = 0; k < 3; ++k) {
-        ring[t[k]].push_back(t[(k + 1) % 3]);
-        ring[t[k]].push_back(t[(k + 2) % 3]);
-      }
-    for(auto& nb : ring) {
-      std::sort(nb.begin(), nb.end());
-      nb.erase(std::unique(nb.begin(), nb.end()), nb.end());
+    ring.assign(size(), [&](auto add) {
+      for(const auto& t : triangle)
+        for(int k = 0; k < 3; ++k) {
+          add(t[k], t[(k + 1) % 3]);
+          add(t[k], t[(k + 2) % 3]);
+        }
+    });
+    // Each list sorted, repeats dropped, and the lists packed again.
+    std::size_t kept = 0;
+    for(std::size_t i = 0; i < size(); ++i) {
+      const auto first = ring.items.begin() + static_cast<std::ptrdiff_t>(ring.offsets[i]);
+      const auto last = ring.items.begin() + static_cast<std::ptrdiff_t>(ring.offsets[i + 1]);
+      std::sort(first, last);
+      const auto unique_end = std::unique(first, last);
+      ring.offsets[i] = kept;
+      for(auto j = first; j != unique_end; ++j) ring.items[kept++] = *j;  // kept <= offsets[i]: moves down
     }
+    ring.offsets[size()] = kept;
+    ring.items.resize(kept);
   }
 
   /// The kernel of interior vertex i's link: the points of the unit square
