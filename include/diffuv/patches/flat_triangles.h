@@ -93,6 +93,15 @@ std::size_t hand_flat_triangles_to_neighbours(const TriangleMesh& tm, VertexPoin
     corners.assign(sides.corners.begin(), sides.corners.end());
     return flat.size();
   };
+  // Whether a face of patch q has an edge with a face of another patch.
+  auto has_neighbour = [&](std::size_t q) {
+    for(face_descriptor f : seg.patch_faces[q])
+      for(auto h : CGAL::halfedges_around_face(halfedge(f, tm), tm)) {
+        const face_descriptor g = face(opposite(h, tm), tm);
+        if(g != boost::graph_traits<TriangleMesh>::null_face() && seg.face_patch[get(findex, g)] != q) return true;
+      }
+    return false;
+  };
   // Moves face f from patch `from` to the end of patch `to`; returns its old position.
   auto move = [&](face_descriptor f, std::size_t from, std::size_t to) {
     auto& faces_from = seg.patch_faces[from];
@@ -119,8 +128,9 @@ std::size_t hand_flat_triangles_to_neighbours(const TriangleMesh& tm, VertexPoin
     for(std::size_t round = 0; round < max_rounds; ++round) {
       std::size_t this_round = 0;
       for(std::size_t p = 0; p < seg.number_of_patches(); ++p) {
-        // A quad of the layout hands off nothing (below): not measured.
-        if(seg.corners(p)) continue;
+        // A quad of the layout hands off nothing (below), nor does a patch
+        // with no neighbour (a disc kept whole): not measured.
+        if(seg.corners(p) || !has_neighbour(p)) continue;
         if(count_flat(p) == unusable || flat.empty()) continue;
         // In the order of their centroids, not of their indices: the result
         // then does not depend on the face numbering.
