@@ -362,6 +362,81 @@ TEST(DiscPatches, TheCornerSearchTakesTheJudgesScoreOfADiscKeptWhole)
   }
 }
 
+// The map the judge made of a disc it keeps whole is taken by
+// parameterize_patches() (`Known_charts`) only where the map would be the
+// same: then the chart is the one a fresh map gives, bit for bit, drawn on the
+// same rectangle with the same warps. Other distances, other repair options
+// or the faces in another order map the patch again.
+TEST(DiscPatches, TheMapOfADiscKeptWholeIsTakenFromTheJudge)
+{
+  using diffuv_test::Mesh;
+  using Atlas = diffuv::Uv_atlas<Mesh>;
+  for(const char* name : {"nefertiti.off", "cylinder_locally_refined.off"}) {
+    const Mesh& m = diffuv_test::cgal_mesh(name);
+    auto known = std::make_shared<diffuv::Known_charts>();
+    diffuv::Raw_map_judge_options judging;
+    judging.known_charts = known;
+    diffuv::Segmentation<Mesh> seg;
+    diffuv::Patching_report report;
+    ASSERT_TRUE(diffuv::diffusion_patches(m, m.points(), {}, seg, {}, &report, judging).ok()) << name;
+    ASSERT_EQ(seg.number_of_patches(), 1u) << name << ": not kept whole";
+    ASSERT_EQ(known->size(), 1u) << name;
+
+    auto map = [&](const diffuv::Segmentation<Mesh>& s, Atlas& atlas, const diffuv::Known_charts* charts,
+                   const diffuv::Repair_options& repair = diffuv::Repair_options()) {
+      diffuv::Patch_parameterization_options o;
+      o.repair = repair;
+      o.known_charts = charts;
+      const auto results = diffuv::parameterize_patches(m, m.points(), s, atlas, o);
+      EXPECT_TRUE(results[0].status.ok()) << name << ": " << results[0].status.what();
+      return results[0];
+    };
+    // The same chart as a fresh map: vertices, (u,v), rectangle, warps, repair.
+    auto expect_same = [&](const Atlas& a, const diffuv::Patch_result<Mesh>& ra, const Atlas& b,
+                           const diffuv::Patch_result<Mesh>& rb) {
+      const auto &ca = a.chart(ra.chart), &cb = b.chart(rb.chart);
+      EXPECT_EQ(ca.vertices, cb.vertices) << name;
+      ASSERT_EQ(ca.uv.size(), cb.uv.size()) << name;
+      std::size_t differ = 0;
+      for(std::size_t i = 0; i < ca.uv.size(); ++i) differ += ca.uv[i] != cb.uv[i];
+      EXPECT_EQ(differ, 0u) << name;
+      EXPECT_EQ(ca.size, cb.size) << name;
+      const auto ta = a.chart_texture_map(ra.chart), tb = b.chart_texture_map(rb.chart);
+      std::size_t drawn_apart = 0;
+      for(auto v : ca.vertices) drawn_apart += get(ta, v) != get(tb, v);
+      EXPECT_EQ(drawn_apart, 0u) << name;
+      EXPECT_EQ(ra.repair.moved_vertices, rb.repair.moved_vertices) << name;
+      EXPECT_EQ(ra.repair.folded_faces, rb.repair.folded_faces) << name;
+      EXPECT_EQ(ra.repair.thin_faces, rb.repair.thin_faces) << name;
+      EXPECT_EQ(ra.sides.corners, rb.sides.corners) << name;
+    };
+
+    Atlas taken(m), fresh(m);
+    const auto r_taken = map(seg, taken, known.get());
+    if(std::string(name) == "cylinder_locally_refined.off")  // a map the repair mended: its report is taken too
+      EXPECT_GT(r_taken.repair.moved_vertices, 0u) << name;
+    EXPECT_EQ(known->taken(), 1u) << name;
+    const auto r_fresh = map(seg, fresh, nullptr);
+    expect_same(taken, r_taken, fresh, r_fresh);
+
+    // Other repair options, other distances, the faces in another order: mapped again.
+    diffuv::Repair_options no_near_folds;
+    no_near_folds.max_angle_distortion = 0;
+    Atlas other_repair(m), other_repair_fresh(m);
+    expect_same(other_repair, map(seg, other_repair, known.get(), no_near_folds), other_repair_fresh,
+                map(seg, other_repair_fresh, nullptr, no_near_folds));
+    Atlas by_graph(m);
+    diffuv::Patch_parameterization_options graph_options;
+    graph_options.known_charts = known.get();
+    EXPECT_TRUE(diffuv::parameterize_patches<diffuv::Graph_distance_tag>(m, m.points(), seg, by_graph, graph_options)[0].status.ok());
+    diffuv::Segmentation<Mesh> turned = seg;
+    std::reverse(turned.patch_faces[0].begin(), turned.patch_faces[0].end());
+    Atlas reversed(m);
+    map(turned, reversed, known.get());
+    EXPECT_EQ(known->taken(), 1u) << name << ": a map was taken where it would differ";
+  }
+}
+
 // The library's one call, `diffusion_patches()`, gives the layout the tool
 // maps (refined by the raw-map judge): on cow, the fold repair moves a
 // quarter of the vertices or fewer than on the unrefined layout

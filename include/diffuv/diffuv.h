@@ -74,6 +74,7 @@
 #include <diffuv/parameterization/chart_rectangle.h>
 #include <diffuv/parameterization/diffusion_coordinates.h>
 #include <diffuv/parameterization/diffusion_patches.h>
+#include <diffuv/parameterization/known_charts.h>
 #include <diffuv/parameterization/layout_judge.h>
 #include <diffuv/parameterization/parameterize_disc.h>
 #include <diffuv/parameterization/parameterize_patches.h>

@@ -30,6 +30,7 @@
 #include <iostream>
 #include <filesystem>
 #include <map>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -327,10 +328,13 @@ inline std::string flat_triangles_handed_clause(std::size_t handed)
   return count_text(handed, "flat triangle") + " handed to a neighbour";
 }
 
-/// Cuts the mesh into disc patches (see `diffuv::disc_patches()`).
+/// Cuts the mesh into disc patches (see `diffuv::disc_patches()`). With
+/// `known`, the maps of the discs kept whole are left there for the mapping
+/// to take (`diffuv::Known_charts`).
 /// \throws diffuv::Input_error with `--strict` if a region is not a disc
 inline diffuv::Segmentation<Mesh> make_patches(const Input_mesh& in, const Patch_cli_options& o,
-                                               diffuv::Patching_report& report)
+                                               diffuv::Patching_report& report,
+                                               std::shared_ptr<diffuv::Known_charts> known = nullptr)
 {
   diffuv::Patching_options options;
   options.layout = o.layout == "voronoi" ? diffuv::Patch_layout::voronoi : diffuv::Patch_layout::quads;
@@ -343,6 +347,7 @@ inline diffuv::Segmentation<Mesh> make_patches(const Input_mesh& in, const Patch
   if(o.patches > 0) options.discs = diffuv::Disc_components::laid_out;
   diffuv::Raw_map_judge_options judging;
   judging.threads = o.threads;
+  judging.known_charts = std::move(known);
   diffuv::Segmentation<Mesh> seg;
   const diffuv::Status status =
       diffuv::diffusion_patches(in.mesh, in.mesh.points(), in.face_labels, seg, options, &report, judging);

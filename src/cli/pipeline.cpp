@@ -71,11 +71,13 @@ Parameterization parameterize_by_patches(const Input_mesh& in, const Patch_cli_o
   Parameterization result;
   result.atlas = std::make_unique<Atlas>(in.mesh);
   const auto start = std::chrono::steady_clock::now();
-  result.seg = make_patches(in, options, result.patching);
+  // The discs the layout keeps whole are mapped once, by its judge.
+  auto known = std::make_shared<diffuv::Known_charts>();
+  result.seg = make_patches(in, options, result.patching, known);
   result.patches_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   result.patches = with_distance(distance, [&](auto tag) {
     return diffuv::parameterize_patches<decltype(tag)>(in.mesh, in.mesh.points(), result.seg, *result.atlas,
-                                                       diffuv::Patch_parameterization_options{repair, nullptr, true, threads, drawing});
+                                                       diffuv::Patch_parameterization_options{repair, nullptr, true, threads, drawing, known.get()});
   });
   result.milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return result;

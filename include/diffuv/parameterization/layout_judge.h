@@ -16,6 +16,7 @@
 #include <diffuv/graph/heap_tags.h>
 #include <diffuv/parameterization/chart_rectangle.h>
 #include <diffuv/parameterization/diffusion_coordinates.h>
+#include <diffuv/parameterization/known_charts.h>
 #include <diffuv/metrics/distortion.h>
 #include <diffuv/parameterization/parameterize_patches.h>
 #include <diffuv/patches/patch_mesh.h>
@@ -403,6 +404,11 @@ struct Raw_map_judge_options {
     o.mapped_candidates = 3;
     return o;
   }();
+  /// If given, `whole_patches_to_lay_out()` leaves here the map of each disc
+  /// it keeps whole, for `parameterize_patches()` to take
+  /// (`Patch_parameterization_options::known_charts`) instead of mapping the
+  /// disc again (the judge maps it as the default pipeline does).
+  std::shared_ptr<Known_charts> known_charts;
 };
 
 /// Judges a layout by the raw diffusion map of each patch (fast marching, no
@@ -489,7 +495,9 @@ public:
     for(std::size_t p = 0; p < n; ++p)
       if(p >= candidates.size() || !candidates[p]) to_map.patch_faces[p].clear();
     Uv_atlas<TriangleMesh> atlas(*tm_);
-    const auto results = parameterize_patches<Fmm_distance_tag>(*tm_, vpm_, to_map, atlas, Patch_parameterization_options{Repair_options(), nullptr, true, options_.threads, Chart_drawing_options{0}});
+    const Repair_options whole_map_repair;
+    const auto results = parameterize_patches<Fmm_distance_tag, Fibonacci_heap_tag>(
+        *tm_, vpm_, to_map, atlas, Patch_parameterization_options{whole_map_repair, nullptr, true, options_.threads, Chart_drawing_options{0}});
     std::vector<std::size_t> bad;
     for(std::size_t p = 0; p < n; ++p) {
       // A patch that cannot be mapped at all (a lone triangle: fewer than
@@ -503,8 +511,20 @@ public:
       whole_scores_->insert_or_assign(faces_key(seg, p), d.injective() ? d.stretch_l2 : std::numeric_limits<double>::infinity());
       const double moved = static_cast<double>(results[p].repair.moved_vertices + results[p].repair.moved_border_vertices);
       if(!d.injective() || d.stretch_l2 > options_.max_stretch || d.area_mean > options_.max_area ||
-         moved > options_.max_moved * static_cast<double>(atlas.chart(c).vertices.size()))
+         moved > options_.max_moved * static_cast<double>(atlas.chart(c).vertices.size())) {
         bad.push_back(p);
+      } else if(options_.known_charts) {
+        // Kept whole: the pipeline would map it again, exactly so.
+        Known_charts::Chart known;
+        const auto vindex = get(boost::vertex_index, *tm_);
+        known.vertices.reserve(atlas.chart(c).vertices.size());
+        for(auto v : atlas.chart(c).vertices) known.vertices.push_back(static_cast<std::size_t>(get(vindex, v)));
+        known.uv.reserve(atlas.chart(c).uv.size());
+        for(const auto& q : atlas.chart(c).uv) known.uv.push_back({{q.x(), q.y()}});
+        known.repair = results[p].repair;
+        options_.known_charts->add<Fmm_distance_tag, Fibonacci_heap_tag>(Known_charts::key(*tm_, seg.patch_faces[p], results[p].sides),
+                                                                         whole_map_repair, std::move(known));
+      }
     }
     return bad;
   }

@@ -74,6 +74,15 @@ struct Repair_options {
   std::size_t kernel_sweeps = 4;
 };
 
+/// Whether two sets of options repair alike (every field; keep in step with them).
+inline bool operator==(const Repair_options& a, const Repair_options& b)
+{
+  return a.enabled == b.enabled && a.initial_rings == b.initial_rings && a.max_local_rounds == b.max_local_rounds &&
+         a.whole_patch_faces == b.whole_patch_faces && a.max_angle_distortion == b.max_angle_distortion &&
+         a.max_thin_rounds == b.max_thin_rounds && a.kernel_sweeps == b.kernel_sweeps;
+}
+inline bool operator!=(const Repair_options& a, const Repair_options& b) { return !(a == b); }
+
 /// What `repair_folds()` did to one patch (all zero when the repair is off).
 struct Repair_report {
   std::size_t folded_faces = 0;        ///< faces flipped or degenerate, or around a vertex the map winds around twice, before the repair (flat ones excluded)
