@@ -365,8 +365,8 @@ TEST(DiscPatches, TheCornerSearchTakesTheJudgesScoreOfADiscKeptWhole)
 // The map the judge made of a disc it keeps whole is taken by
 // parameterize_patches() (`Known_charts`) only where the map would be the
 // same: then the chart is the one a fresh map gives, bit for bit, drawn on the
-// same rectangle with the same warps. Other distances, other repair options
-// or the faces in another order map the patch again.
+// same rectangle with the same warps. Other distances, other repair options,
+// the faces in another order or another mesh map the patch again.
 TEST(DiscPatches, TheMapOfADiscKeptWholeIsTakenFromTheJudge)
 {
   using diffuv_test::Mesh;
@@ -433,6 +433,12 @@ TEST(DiscPatches, TheMapOfADiscKeptWholeIsTakenFromTheJudge)
     std::reverse(turned.patch_faces[0].begin(), turned.patch_faces[0].end());
     Atlas reversed(m);
     map(turned, reversed, known.get());
+    // Another mesh with the same faces and sides (a copy) maps its own.
+    const Mesh copy = m;
+    Atlas on_copy(copy);
+    diffuv::Patch_parameterization_options copy_options;
+    copy_options.known_charts = known.get();
+    EXPECT_TRUE(diffuv::parameterize_patches(copy, copy.points(), seg, on_copy, copy_options)[0].status.ok());
     EXPECT_EQ(known->taken(), 1u) << name << ": a map was taken where it would differ";
   }
 }

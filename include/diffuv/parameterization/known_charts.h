@@ -23,6 +23,7 @@
 #include <array>
 #include <atomic>
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <mutex>
 #include <typeindex>
@@ -36,8 +37,11 @@ namespace diffuv {
 /// `parameterize_patches()` (`Patch_parameterization_options::known_charts`)
 /// can take one instead of mapping its patch again. Filled by `Raw_map_judge`
 /// (`Raw_map_judge_options::known_charts`) with the maps of the discs it keeps
-/// whole. Vertices are kept by their `vertex_index`, faces by `face_index`.
-/// Adding is thread-safe; finding is safe alongside other finds.
+/// whole. Vertices are kept by their `vertex_index`, faces by `face_index`,
+/// and the key names the mesh object and its sizes, so a map is never taken
+/// for another mesh; it is for the same mesh with other points, so use one
+/// `Known_charts` for one mesh whose points do not change between the calls
+/// (as the tool does). Adding is thread-safe; find only once nothing is being added.
 class Known_charts {
 public:
   /// A patch's map: its vertices (by index) and their (u,v), in the order
@@ -48,8 +52,8 @@ public:
     Repair_report repair;
   };
 
-  /// The key of a patch: its faces in order, then its four sides in the order
-  /// of `Side`, each after a separator.
+  /// The key of a patch: the mesh (its address and sizes), its faces in
+  /// order, then its four sides in the order of `Side`, each after a separator.
   template <class TriangleMesh, class FaceRange>
   static std::vector<std::size_t> key(const TriangleMesh& tm, const FaceRange& faces,
                                       const Four_sides<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& sides)
@@ -57,7 +61,10 @@ public:
     auto findex = get(boost::face_index, tm);
     auto vindex = get(boost::vertex_index, tm);
     std::vector<std::size_t> k;
-    k.reserve(faces.size() + sides.v1.size() + sides.u2.size() + sides.v2.size() + sides.u1.size() + 4);
+    k.reserve(faces.size() + sides.v1.size() + sides.u2.size() + sides.v2.size() + sides.u1.size() + 7);
+    k.push_back(reinterpret_cast<std::uintptr_t>(&tm));
+    k.push_back(static_cast<std::size_t>(num_vertices(tm)));
+    k.push_back(static_cast<std::size_t>(num_faces(tm)));
     for(auto f : faces) k.push_back(static_cast<std::size_t>(get(findex, f)));
     for(Side s : all_sides) {
       k.push_back(separator);

@@ -27,6 +27,7 @@
 #include <tbb/task_arena.h>
 #endif
 
+#include <algorithm>
 #include <chrono>
 #include <cstddef>
 #include <stdexcept>
@@ -44,7 +45,7 @@ struct Patch_result {
   Four_sides<typename boost::graph_traits<TriangleMesh>::vertex_descriptor> sides;
   Side_report side_report;           ///< how the corners were found
   Repair_report repair;              ///< what the fold repair did
-  double milliseconds = 0;           ///< sides, four distance runs, (u,v), repair and chart (kd-tree), on its thread
+  double milliseconds = 0;           ///< sides, four distance runs, (u,v), repair and chart (kd-tree), on its thread (for a map taken from `known_charts`: the disc check, sides and chart)
 };
 
 namespace internal {
@@ -224,7 +225,10 @@ std::vector<Patch_result<TriangleMesh>> parameterize_patches(const TriangleMesh&
     if(known_charts) {
       const Known_charts::Chart* known =
           known_charts->find<DistanceTag, HeapTag>(Known_charts::key(tm, seg.patch_faces[p], r.sides), repair);
-      if(known) {
+      // (Every index a vertex of the mesh, as it is for a map of this mesh.)
+      if(known && std::all_of(known->vertices.begin(), known->vertices.end(), [&](std::size_t i) {
+           return i < vertex_by_index.size() && vertex_by_index[i] != boost::graph_traits<TriangleMesh>::null_vertex();
+         })) {
         chart.vertices.reserve(known->vertices.size());
         for(std::size_t i : known->vertices) chart.vertices.push_back(vertex_by_index[i]);
         chart.uv.reserve(known->uv.size());

@@ -51,7 +51,8 @@
 
 namespace diffuv {
 
-/// How `repair_folds()` works.
+/// How `repair_folds()` works. (A new field must join `operator==` below:
+/// `Known_charts` takes a map only for equal options.)
 struct Repair_options {
   bool enabled = true;            ///< false keeps the raw diffusion coordinates (the paper's method)
   /// Rings of vertices added around the first folds' own ring (0: the folds'
