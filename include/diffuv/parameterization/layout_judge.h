@@ -549,24 +549,22 @@ public:
   }
 
 private:
+  // A patch by its faces alone (in order); `extra` entries reserved after them.
+  std::vector<std::size_t> faces_key(const Segmentation<TriangleMesh>& seg, std::size_t p, std::size_t extra = 0) const
+  {
+    std::vector<std::size_t> key;
+    key.reserve(seg.patch_faces[p].size() + extra);
+    for(auto f : seg.patch_faces[p]) key.push_back(get(get(boost::face_index, *tm_), f));
+    return key;
+  }
   // A patch by its faces (in order) and corners.
   std::vector<std::size_t> key_of(const Segmentation<TriangleMesh>& layout, std::size_t p) const
   {
-    std::vector<std::size_t> key;
-    key.reserve(layout.patch_faces[p].size() + 4);
-    for(auto f : layout.patch_faces[p]) key.push_back(get(get(boost::face_index, *tm_), f));
+    std::vector<std::size_t> key = faces_key(layout, p, 4);
     for(auto v : layout.patch_corners[p]) key.push_back(get(get(boost::vertex_index, *tm_), v));
     return key;
   }
   using Verdicts = std::unordered_map<std::vector<std::size_t>, bool, internal::Index_list_hash>;
-  // A patch by its faces alone (in order).
-  std::vector<std::size_t> faces_key(const Segmentation<TriangleMesh>& seg, std::size_t p) const
-  {
-    std::vector<std::size_t> key;
-    key.reserve(seg.patch_faces[p].size());
-    for(auto f : seg.patch_faces[p]) key.push_back(get(get(boost::face_index, *tm_), f));
-    return key;
-  }
   using Scores = std::unordered_map<std::vector<std::size_t>, double, internal::Index_list_hash>;
 
   const TriangleMesh* tm_;
