@@ -25,7 +25,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <random>
+#include <thread>
 #include <vector>
 
 namespace {
@@ -415,6 +417,44 @@ TEST(Distances, ReusableFastMarchingMatchesOneShotRunsAndHeaps)
     ASSERT_TRUE(quaternary.run(sources, boost::make_iterator_property_map(other.begin(), index)).ok());
     for(std::size_t i = 0; i < other.size(); ++i) EXPECT_NEAR(other[i], reused[i], 1e-9);
   }
+}
+
+// A twin shares the tables of the engine it came from and has buffers of its
+// own: runs of both at the same time, on two threads, give the distances of
+// runs one after the other, bit for bit.
+TEST(Distances, FastMarchingTwinsRunAtTheSameTimeWithTheSameDistances)
+{
+  const Mesh& mesh = cgal_mesh("mushroom.off");
+  const auto index = get(boost::vertex_index, mesh);
+  const auto arc = border_arc(mesh);
+  const std::vector<vertex_descriptor> first_half(arc.begin(), arc.begin() + arc.size() / 2),
+      second_half(arc.begin() + arc.size() / 2, arc.end());
+  diffuv::Fast_marching<Mesh> fmm(mesh);
+  std::vector<double> alone_1(num_vertices(mesh)), alone_2(num_vertices(mesh));
+  ASSERT_TRUE(fmm.run(first_half, boost::make_iterator_property_map(alone_1.begin(), index)).ok());
+  ASSERT_TRUE(fmm.run(second_half, boost::make_iterator_property_map(alone_2.begin(), index)).ok());
+  ASSERT_NE(alone_1, alone_2);
+
+  auto twin = fmm.twin();
+  EXPECT_EQ(twin.number_of_obtuse_angles(), fmm.number_of_obtuse_angles());
+  for(int round = 0; round < 3; ++round) {
+    std::vector<double> together_1(num_vertices(mesh)), together_2(num_vertices(mesh));
+    std::thread other([&] { ASSERT_TRUE(twin.run(second_half, boost::make_iterator_property_map(together_2.begin(), index)).ok()); });
+    ASSERT_TRUE(fmm.run(first_half, boost::make_iterator_property_map(together_1.begin(), index)).ok());
+    other.join();
+    EXPECT_EQ(together_1, alone_1) << round;
+    EXPECT_EQ(together_2, alone_2) << round;
+  }
+  // A twin of a twin keeps the tables when the engines before it are gone.
+  std::unique_ptr<diffuv::Fast_marching<Mesh>> last;
+  {
+    diffuv::Fast_marching<Mesh> first(mesh);
+    auto second = first.twin();
+    last = std::make_unique<diffuv::Fast_marching<Mesh>>(second.twin());
+  }
+  std::vector<double> again(num_vertices(mesh));
+  ASSERT_TRUE(last->run(first_half, boost::make_iterator_property_map(again.begin(), index)).ok());
+  EXPECT_EQ(again, alone_1);
 }
 
 } // namespace

@@ -40,10 +40,13 @@ namespace internal {
 template <class Graph, class DistanceTag, class HeapTag>
 class Distance_engine;
 
+// Each engine's twin() is a second engine over the same graph for a run on
+// another thread at the same time; it shares what can be shared.
 template <class Graph, class HeapTag>
 class Distance_engine<Graph, Graph_distance_tag, HeapTag> {
 public:
-  explicit Distance_engine(const Graph& g) : dijkstra_(g) {}
+  explicit Distance_engine(const Graph& g) : graph_(g), dijkstra_(g) {}
+  Distance_engine twin() const { return Distance_engine(graph_); }
   template <class SourceRange, class WeightMap, class DistanceMap>
   Status run(const SourceRange& sources, WeightMap weight, DistanceMap distance)
   {
@@ -51,6 +54,7 @@ public:
   }
 
 private:
+  const Graph& graph_;
   Multi_source_dijkstra<Graph, HeapTag> dijkstra_;
 };
 
@@ -61,11 +65,24 @@ public:
   template <class SourceRange, class WeightMap, class DistanceMap>
   Status run(const SourceRange& sources, WeightMap, DistanceMap distance)
   {
-    if(!marching_) marching_ = std::make_unique<Fast_marching<Graph, HeapTag>>(graph_); // per-mesh set-up, once
-    return marching_->run(sources, distance);
+    return marching().run(sources, distance);
+  }
+  // Builds this engine's tables if it has none yet (on the calling thread),
+  // then gives the twin a share of them: one build for both.
+  Distance_engine twin()
+  {
+    Distance_engine other(graph_);
+    other.marching_ = std::make_unique<Fast_marching<Graph, HeapTag>>(marching().twin());
+    return other;
   }
 
 private:
+  Fast_marching<Graph, HeapTag>& marching()
+  {
+    if(!marching_) marching_ = std::make_unique<Fast_marching<Graph, HeapTag>>(graph_); // per-mesh set-up, once
+    return *marching_;
+  }
+
   const Graph& graph_;
   std::unique_ptr<Fast_marching<Graph, HeapTag>> marching_;
 };
@@ -79,6 +96,7 @@ public:
   {
     return exact_geodesic_distances(graph_, get(CGAL::vertex_point, graph_), sources, distance);
   }
+  Distance_engine twin() const { return Distance_engine(graph_); }
 
 private:
   const Graph& graph_;

@@ -36,6 +36,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -192,21 +193,29 @@ public:
   Fast_marching(const TriangleMesh& g, VertexPointMap vpm, const Fast_marching_options& options = {})
     : graph_(g), vertex_index_(get(boost::vertex_index, g)), options_(options)
   {
+    Tables& t = *tables_;
     const std::size_t n = num_vertices(g);
-    vertices_.resize(n);
-    points_.resize(n);
+    t.vertices.resize(n);
+    t.points.resize(n);
     for(vertex_descriptor v : boost::make_iterator_range(vertices(g))) {
       const Index i = index_of(v);
-      vertices_[i] = v;
+      t.vertices[i] = v;
       const auto& p = get(vpm, v);
-      points_[i] = {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
+      t.points[i] = {CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())};
     }
     build_neighbours();
     build_updates();
-    handles_.resize(n);
-    state_.assign(n, unseen);
-    distance_.assign(n, std::numeric_limits<double>::infinity());
+    // The points are needed only to build the tables.
+    t.points.clear();
+    t.points.shrink_to_fit();
+    make_scratch();
   }
+
+  /// Another engine over the same mesh that shares this one's tables, which
+  /// no run changes, and has buffers of its own: the two may run at the same
+  /// time on two threads (the four passes of one large patch), for the
+  /// memory of one set of tables. Both must not outlive the mesh.
+  Fast_marching twin() const { return Fast_marching(*this, Twin_tag()); }
 
   /// Fills `distance` with the approximate geodesic distance of every vertex
   /// to the nearest source. Vertices not reached from any source get `+infinity`.
@@ -236,8 +245,9 @@ public:
     }
 
     if(any_source) march();
-    for(std::size_t i = 0; i < vertices_.size(); ++i)
-      put(distance, vertices_[i], distance_[i]);
+    const Tables& t = *tables_;
+    for(std::size_t i = 0; i < t.vertices.size(); ++i)
+      put(distance, t.vertices[i], distance_[i]);
     return any_source ? Status() : Status(Status_code::empty_source_range);
   }
 
@@ -248,8 +258,25 @@ public:
   std::size_t number_of_split_angles() const { return split_angles_; }
 
 private:
+  struct Twin_tag {};
+  Fast_marching(const Fast_marching& other, Twin_tag)
+    : graph_(other.graph_), vertex_index_(other.vertex_index_), options_(other.options_), status_(other.status_),
+      obtuse_angles_(other.obtuse_angles_), split_angles_(other.split_angles_), tables_(other.tables_)
+  {
+    make_scratch();
+  }
+
+  void make_scratch()
+  {
+    const std::size_t n = tables_->vertices.size();
+    handles_.resize(n);
+    state_.assign(n, unseen);
+    distance_.assign(n, std::numeric_limits<double>::infinity());
+  }
+
   void march()
   {
+    const Tables& t = *tables_;
     while(!heap_.empty()) {
       const Node top = heap_.top();
       heap_.pop();
@@ -258,14 +285,14 @@ private:
       state_[a] = accepted;
 
       // Edge updates: Dijkstra's relaxation, the fallback and the upper bound.
-      for(Index k = neighbour_begin_[a]; k < neighbour_begin_[a + 1]; ++k) {
-        const Neighbour& nb = neighbours_[k];
+      for(Index k = t.neighbour_begin[a]; k < t.neighbour_begin[a + 1]; ++k) {
+        const Neighbour& nb = t.neighbours[k];
         if(state_[nb.vertex] != accepted) relax(nb.vertex, da + nb.length);
       }
       // Triangle updates through the (real or virtual) triangles where a and
       // the other known vertex are both accepted now.
-      for(Index k = update_begin_[a]; k < update_begin_[a + 1]; ++k) {
-        const Update& u = updates_[update_ids_[k]];
+      for(Index k = t.update_begin[a]; k < t.update_begin[a + 1]; ++k) {
+        const Update& u = t.updates[t.update_ids[k]];
         if(state_[u.c] == accepted) continue;
         const Index b = (u.p == a) ? u.q : u.p;
         if(state_[b] != accepted) continue;
@@ -295,19 +322,25 @@ private:
   // patch only lists its own edges.
   void build_neighbours()
   {
-    const std::size_t n = vertices_.size();
-    neighbour_begin_.assign(n + 1, 0);
-    neighbours_.clear();
+    Tables& t = *tables_;
+    const std::size_t n = t.vertices.size();
+    t.neighbour_begin.assign(n + 1, 0);
+    t.neighbours.clear();
+    // Each interior edge is listed from both ends, a border edge from both
+    // too: 2E = 3F + B <= 3F + V on a triangle mesh. Growing the rows by
+    // doubling instead touched twice the memory (a third of this
+    // constructor's time on a 1.1M-vertex disc was the kernel zeroing pages).
+    t.neighbours.reserve(3 * static_cast<std::size_t>(num_faces(graph_)) + n);
     for(std::size_t i = 0; i < n; ++i) {
-      neighbour_begin_[i] = static_cast<Index>(neighbours_.size());
-      const vertex_descriptor v = vertices_[i];
+      t.neighbour_begin[i] = static_cast<Index>(t.neighbours.size());
+      const vertex_descriptor v = t.vertices[i];
       if(halfedge(v, graph_) == boost::graph_traits<TriangleMesh>::null_halfedge()) continue; // isolated
       for(halfedge_descriptor h : CGAL::halfedges_around_target(v, graph_)) {
         const Index j = index_of(source(h, graph_));
-        neighbours_.push_back(Neighbour{j, internal::fmm_distance(points_[i], points_[j])});
+        t.neighbours.push_back(Neighbour{j, internal::fmm_distance(t.points[i], t.points[j])});
       }
     }
-    neighbour_begin_[n] = static_cast<Index>(neighbours_.size());
+    t.neighbour_begin[n] = static_cast<Index>(t.neighbours.size());
   }
 
   // The updates of every corner of every face, obtuse corners split by
@@ -315,7 +348,12 @@ private:
   // vertex (p and q of each update).
   void build_updates()
   {
-    updates_.clear();
+    Tables& t = *tables_;
+    t.updates.clear();
+    // At most one obtuse corner per triangle, split into two more updates:
+    // 5 per face is a bound, so the table is never copied while it grows.
+    // Capacity never written is address space only, not memory.
+    t.updates.reserve(5 * static_cast<std::size_t>(num_faces(graph_)));
     obtuse_angles_ = split_angles_ = 0;
     for(auto f : boost::make_iterator_range(faces(graph_))) {
       const halfedge_descriptor h0 = halfedge(f, graph_);
@@ -328,15 +366,15 @@ private:
         add_corner(h);
     }
 
-    const std::size_t n = vertices_.size();
-    update_begin_.assign(n + 1, 0);
-    for(const Update& u : updates_) { ++update_begin_[u.p + 1]; ++update_begin_[u.q + 1]; }
-    for(std::size_t i = 0; i < n; ++i) update_begin_[i + 1] += update_begin_[i];
-    update_ids_.resize(update_begin_[n]);
-    std::vector<Index> fill(update_begin_.begin(), update_begin_.end() - 1);
-    for(Index k = 0; k < updates_.size(); ++k) {
-      update_ids_[fill[updates_[k].p]++] = k;
-      update_ids_[fill[updates_[k].q]++] = k;
+    const std::size_t n = t.vertices.size();
+    t.update_begin.assign(n + 1, 0);
+    for(const Update& u : t.updates) { ++t.update_begin[u.p + 1]; ++t.update_begin[u.q + 1]; }
+    for(std::size_t i = 0; i < n; ++i) t.update_begin[i + 1] += t.update_begin[i];
+    t.update_ids.resize(t.update_begin[n]);
+    std::vector<Index> fill(t.update_begin.begin(), t.update_begin.end() - 1);
+    for(Index k = 0; k < t.updates.size(); ++k) {
+      t.update_ids[fill[t.updates[k].p]++] = k;
+      t.update_ids[fill[t.updates[k].q]++] = k;
     }
   }
 
@@ -344,15 +382,16 @@ private:
   // next(next(h)) p -> q (the opposite edge).
   void add_corner(halfedge_descriptor h)
   {
+    const Tables& t = *tables_;
     const Index c = index_of(target(h, graph_));
     const Index q = index_of(source(h, graph_));
     const halfedge_descriptor opposite_edge = next(next(h, graph_), graph_);
     const Index p = index_of(source(opposite_edge, graph_));
 
     // Layout with c at the origin, p on the positive x-axis, q above it.
-    const double lp = internal::fmm_distance(points_[c], points_[p]);
-    const double lq = internal::fmm_distance(points_[c], points_[q]);
-    const double lpq = internal::fmm_distance(points_[p], points_[q]);
+    const double lp = internal::fmm_distance(t.points[c], t.points[p]);
+    const double lq = internal::fmm_distance(t.points[c], t.points[q]);
+    const double lpq = internal::fmm_distance(t.points[p], t.points[q]);
     if(!(lp > 0.) || !(lq > 0.)) return; // degenerate: edge updates only
     const double cos_c = std::clamp((lp * lp + lq * lq - lpq * lpq) / (2. * lp * lq), -1., 1.);
     const Vec2 C{0., 0.}, P{lp, 0.}, Q{lq * cos_c, lq * std::sqrt(1. - cos_c * cos_c)};
@@ -377,13 +416,14 @@ private:
   // Stores the update of c from p and q given their positions in one plane.
   void add_update(Index c, Index p, Index q, const Vec2& C, const Vec2& P, const Vec2& Q)
   {
+    Tables& t = *tables_;
     const Vec2 pq = internal::fmm_minus(Q, P), pc = internal::fmm_minus(C, P);
     const double L = std::sqrt(internal::fmm_dot(pq, pq));
     if(!(L > 0.)) return;
     const double cx = internal::fmm_dot(pc, pq) / L;
     const double cy = std::abs(internal::fmm_cross(pq, pc)) / L;
     if(!(cy > 0.)) return; // c on the line pq: no triangle update
-    updates_.push_back(Update{c, p, q, L, cx, cy});
+    t.updates.push_back(Update{c, p, q, L, cx, cy});
   }
 
   // Kimmel and Sethian's splitting of the obtuse angle of vertex c, at
@@ -395,6 +435,7 @@ private:
   // max_unfolding_steps, or when the strip wraps around back to c.
   bool unfold(Index c, halfedge_descriptor h, const Vec2& P, const Vec2& Q, Index& d, Vec2& D) const
   {
+    const Tables& t = *tables_;
     // h goes p -> q; E1 and E2 are the positions of source(h) and target(h).
     Vec2 E1 = P, E2 = Q, behind{0., 0.}; // behind: the third vertex of the last face laid out
     const double nP = std::sqrt(internal::fmm_dot(P, P)), nQ = std::sqrt(internal::fmm_dot(Q, Q));
@@ -416,8 +457,8 @@ private:
       const Vec2 e = internal::fmm_minus(E2, E1);
       const double l = std::sqrt(internal::fmm_dot(e, e));
       if(!(l > 0.)) return false;
-      const double r1 = internal::fmm_distance(points_[v], points_[i1]);
-      const double r2 = internal::fmm_distance(points_[v], points_[i2]);
+      const double r1 = internal::fmm_distance(t.points[v], t.points[i1]);
+      const double r2 = internal::fmm_distance(t.points[v], t.points[i2]);
       const double along = (r1 * r1 - r2 * r2 + l * l) / (2. * l);
       const double across = std::sqrt(std::max(0., r1 * r1 - along * along));
       Vec2 normal{-e[1] / l, e[0] / l};
@@ -451,13 +492,17 @@ private:
   Status status_;
   std::size_t obtuse_angles_ = 0, split_angles_ = 0;
 
-  // Per vertex, by vertex index.
-  std::vector<vertex_descriptor> vertices_;
-  std::vector<Vec3> points_;
-  std::vector<Index> neighbour_begin_, update_begin_;
-  std::vector<Neighbour> neighbours_;
-  std::vector<Update> updates_;
-  std::vector<Index> update_ids_;
+  // Per vertex, by vertex index, and per update: built once by the first
+  // engine, then only read, so a twin() shares them.
+  struct Tables {
+    std::vector<vertex_descriptor> vertices;
+    std::vector<Vec3> points;  // emptied once the rest is built
+    std::vector<Index> neighbour_begin, update_begin;
+    std::vector<Neighbour> neighbours;
+    std::vector<Update> updates;
+    std::vector<Index> update_ids;
+  };
+  std::shared_ptr<Tables> tables_ = std::make_shared<Tables>();
 
   // Scratch of a run.
   Heap heap_;

@@ -80,9 +80,9 @@ public:
   ///         `num_vertices(g)` (not a vertex of the graph); nothing is computed
   ///
   /// \param parallel_passes run the four distance passes on two threads
-  ///        (oneTBB; ignored without it). Each pass then has its own engine, so
-  ///        this pays only where an engine costs little to set up (graph
-  ///        distances); `parameterize_patches()` uses it for a mesh of one patch.
+  ///        (oneTBB; ignored without it), two on each, with a second engine
+  ///        sharing the first's tables; `parameterize_patches()` uses it for a
+  ///        mesh of one patch.
   template <class WeightMap, class UvMap>
   Status compute(const Four_sides<vertex_descriptor>& sides, WeightMap weight, UvMap uv, bool parallel_passes = false)
   {
@@ -98,13 +98,15 @@ public:
     };
 #ifdef CGAL_LINKED_WITH_TBB
     if(parallel_passes) {
-      // u1 and u2 here, v1 and v2 on another thread, each pair with its own engine.
+      // u1 and u2 here, v1 and v2 on another thread, each pair with its own
+      // engine; the twin shares what the first has built (fast marching's
+      // tables), so the set-up is not made twice.
+      auto other = engine_.twin();
       tbb::parallel_for(std::size_t(0), std::size_t(2), [&](std::size_t half) {
         if(half == 0) {
           pass(Side::u1, engine_);
           pass(Side::u2, engine_);
         } else {
-          internal::Distance_engine<Graph, DistanceTag, HeapTag> other(graph_);
           pass(Side::v1, other);
           pass(Side::v2, other);
         }

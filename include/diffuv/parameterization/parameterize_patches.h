@@ -210,6 +210,9 @@ std::vector<Patch_result<TriangleMesh>> parameterize_patches(const TriangleMesh&
     }
   }
 
+  // One patch (a disc mesh): its four distance passes on two threads instead,
+  // the second engine sharing the first's tables (same distances).
+  const bool parallel_passes = threads != 1 && seg.number_of_patches() == 1;
   internal::for_each_patch<TriangleMesh, VertexPointMap>(seg.number_of_patches(), threads, [&](std::size_t p, auto& scratch) {
     Patch_result<TriangleMesh>& r = results[p];
     internal::Patch_chart<TriangleMesh>& chart = charts[p];
@@ -249,10 +252,6 @@ std::vector<Patch_result<TriangleMesh>> parameterize_patches(const TriangleMesh&
       chart.uv.resize(pg.number_of_vertices());
       Diffusion_coordinates<typename Patch_graph<TriangleMesh>::Graph, Graph_distance_tag, HeapTag> coordinates(
           pg.graph());
-      // One patch (a disc mesh): its four passes in parallel instead. (Not
-      // with fast marching: each pass's engine then builds its own tables;
-      // on a 1.1M-vertex disc that was no faster and took 0.5 GB more.)
-      const bool parallel_passes = threads != 1 && seg.number_of_patches() == 1;
       r.status = coordinates.compute(local_sides, pg.length_map(),
                                      boost::make_iterator_property_map(chart.uv.begin(),
                                                                        get(boost::vertex_index, pg.graph())),
@@ -269,7 +268,7 @@ std::vector<Patch_result<TriangleMesh>> parameterize_patches(const TriangleMesh&
       chart.uv.resize(num_vertices(patch));
       auto uv = boost::make_iterator_property_map(chart.uv.begin(), get(boost::vertex_index, patch));
       Diffusion_coordinates<std::decay_t<decltype(patch)>, DistanceTag, HeapTag> coordinates(patch);
-      r.status = coordinates.compute(scratch.mesh_sides, edge_length_map(patch), uv);
+      r.status = coordinates.compute(scratch.mesh_sides, edge_length_map(patch), uv, parallel_passes);
       if(!r.status) return;
       repair_folds(patch, patch.points(), scratch.mesh_sides, uv, repair, &r.repair);
       chart.vertices = pm.mesh_vertices();
