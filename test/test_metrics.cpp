@@ -440,6 +440,58 @@ TEST(Metrics, ABorderThatCrossesItselfStillHasItsOverlapsCounted)
   EXPECT_EQ(diffuv::count_overlapping_pairs(m, all_faces(m), uv), 0u);
 }
 
+// border_maps_to_simple_polygon() finds a chart's faces by marks on their
+// indices when the chart is most of its mesh (a disc mapped whole), and in a
+// sorted list when it is a small part of a large mesh. The same strip, alone
+// in its mesh and after 1,000 unrelated triangles, gets the same answers.
+TEST(Metrics, BorderTestAnswersAlikeForAChartThatIsTheMeshAndOneThatIsASmallPart)
+{
+  auto make_strip = [](Mesh& m, int filler_triangles, double turns) {
+    for(int t = 0; t < filler_triangles; ++t)
+      m.add_face(m.add_vertex(Point_3(t, 5, 0)), m.add_vertex(Point_3(t + 1, 5, 0)), m.add_vertex(Point_3(t, 6, 0)));
+    const int n = 60;
+    std::vector<Vertex> inner, outer;
+    for(int i = 0; i <= n; ++i) {
+      inner.push_back(m.add_vertex(Point_3(0.1 * i, 0, 0)));
+      outer.push_back(m.add_vertex(Point_3(0.1 * i, 1, 0)));
+    }
+    std::vector<Face> strip;
+    for(int i = 0; i < n; ++i) {
+      strip.push_back(m.add_face(inner[i], inner[i + 1], outer[i + 1]));
+      strip.push_back(m.add_face(inner[i], outer[i + 1], outer[i]));
+    }
+    Uv_map uv = add_uv(m);
+    for(int i = 0; i <= n; ++i) {
+      const double angle = 2 * M_PI * turns * i / n;
+      put(uv, inner[i], Point_2(1.5 * std::cos(angle), 1.5 * std::sin(angle)));
+      put(uv, outer[i], Point_2(std::cos(angle), std::sin(angle)));
+    }
+    return std::make_pair(strip, uv);
+  };
+  for(const double turns : {0.5, 1.5}) {
+    Mesh alone, among_others;
+    const auto [strip_a, uv_a] = make_strip(alone, 0, turns);
+    const auto [strip_b, uv_b] = make_strip(among_others, 1000, turns);
+    ASSERT_GE(std::size_t(strip_b.front()), 1000u);  // indices far beyond 8 x the chart's 120 faces
+    const bool simple = turns < 1;
+    EXPECT_EQ(diffuv::internal::border_maps_to_simple_polygon(alone, strip_a, uv_a), simple) << turns;
+    EXPECT_EQ(diffuv::internal::border_maps_to_simple_polygon(among_others, strip_b, uv_b), simple) << turns;
+    // Listed in another order: the same answer; a face listed twice: no answer.
+    std::vector<Face> reversed_a(strip_a.rbegin(), strip_a.rend()), reversed_b(strip_b.rbegin(), strip_b.rend());
+    EXPECT_EQ(diffuv::internal::border_maps_to_simple_polygon(alone, reversed_a, uv_a), simple) << turns;
+    EXPECT_EQ(diffuv::internal::border_maps_to_simple_polygon(among_others, reversed_b, uv_b), simple) << turns;
+    std::vector<Face> twice_a = strip_a, twice_b = strip_b;
+    twice_a.push_back(strip_a[7]);
+    twice_b.push_back(strip_b[7]);
+    EXPECT_FALSE(diffuv::internal::border_maps_to_simple_polygon(alone, twice_a, uv_a)) << turns;
+    EXPECT_FALSE(diffuv::internal::border_maps_to_simple_polygon(among_others, twice_b, uv_b)) << turns;
+    // Half of the strip (60 of 120 faces, 8 x 60 >= 120: marks) is a simple
+    // polygon at half a turn, and still at one and a half (three quarters of a turn).
+    const std::vector<Face> half(strip_a.begin(), strip_a.begin() + 60);
+    EXPECT_TRUE(diffuv::internal::border_maps_to_simple_polygon(alone, half, uv_a)) << turns;
+  }
+}
+
 // A chart with a hole has two border loops: the border cannot show it one-to-one.
 TEST(Metrics, AChartWithAHoleIsCheckedPairByPair)
 {
