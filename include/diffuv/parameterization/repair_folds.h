@@ -141,6 +141,8 @@ Status repair_folds(const TriangleMesh& tm, VertexPointMap vpm,
   }
   for(Side s : all_sides)
     for(vertex_descriptor vd : sides[s]) p.side_mask[get(index, vd)] |= static_cast<std::uint8_t>(1u << static_cast<int>(s));
+  p.triangle.reserve(num_faces(tm));
+  p.flat.reserve(num_faces(tm));
   for(auto f : faces(tm)) {
     std::array<std::size_t, 3> t{};
     std::size_t k = 0;
@@ -155,18 +157,6 @@ Status repair_folds(const TriangleMesh& tm, VertexPointMap vpm,
   p.find_faces_of();
   p.mark_flat_interior_groups();
   r.flat_triangles = static_cast<std::size_t>(std::count(p.flat.begin(), p.flat.end(), true));
-  const std::vector<double> u0 = p.u, v0 = p.v;
-  auto write_back = [&]() {
-    std::size_t moved = 0, moved_border = 0;
-    for(std::size_t i = 0; i < n; ++i) {
-      if(p.u[i] == u0[i] && p.v[i] == v0[i]) continue;
-      (p.side_mask[i] ? moved_border : moved) += 1;
-      put(uv, p.vertex[i], Point_2(p.u[i], p.v[i]));
-    }
-    r.moved_vertices = moved;
-    r.moved_border_vertices = moved_border;
-    r.rounds = p.solves;
-  };
 
   std::array<internal::Side_walk, 4> walks;
   const std::array<Side, 4> walk_order = {Side::v1, Side::u2, Side::v2, Side::u1};
@@ -186,6 +176,20 @@ Status repair_folds(const TriangleMesh& tm, VertexPointMap vpm,
   const bool near_folds = options.max_angle_distortion > 0;
   r.folded_faces = p.find_defects();
   if(r.folded_faces == 0 && border_ok && !(near_folds && p.find_thin(options.max_angle_distortion).first > 0)) return Status();
+
+  // Nothing has moved yet: the map as it came, to count what the repair moves.
+  const std::vector<double> u0 = p.u, v0 = p.v;
+  auto write_back = [&]() {
+    std::size_t moved = 0, moved_border = 0;
+    for(std::size_t i = 0; i < n; ++i) {
+      if(p.u[i] == u0[i] && p.v[i] == v0[i]) continue;
+      (p.side_mask[i] ? moved_border : moved) += 1;
+      put(uv, p.vertex[i], Point_2(p.u[i], p.v[i]));
+    }
+    r.moved_vertices = moved;
+    r.moved_border_vertices = moved_border;
+    r.rounds = p.solves;
+  };
 
   // 1. A side that does not run monotonically is re-spaced by arc length.
   for(const auto& w : walks)
