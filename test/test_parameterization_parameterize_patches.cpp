@@ -275,9 +275,9 @@ TEST(ParallelPatches, FourPassesOfOnePatchInParallelGiveTheSameCoordinates)
   Seg seg;
   ASSERT_TRUE(diffuv::disc_patches(disc, disc.points(), {}, seg).ok());
   ASSERT_EQ(seg.number_of_patches(), 1u);
-  auto map_on = [&](auto distance, std::size_t threads) {
+  auto map_on = [&](auto distance, std::size_t threads, bool repair = false) {
     auto atlas = std::make_unique<diffuv::Uv_atlas<Mesh>>(disc);
-    const auto r = diffuv::parameterize_patches<decltype(distance)>(disc, disc.points(), seg, *atlas, diffuv::Patch_parameterization_options{diffuv::Repair_options{false}, nullptr, true, threads});
+    const auto r = diffuv::parameterize_patches<decltype(distance)>(disc, disc.points(), seg, *atlas, diffuv::Patch_parameterization_options{diffuv::Repair_options{repair}, nullptr, true, threads});
     EXPECT_TRUE(r.front().status.ok()) << threads;
     return atlas;
   };
@@ -288,6 +288,9 @@ TEST(ParallelPatches, FourPassesOfOnePatchInParallelGiveTheSameCoordinates)
   EXPECT_EQ(fmm_2->chart(0).vertices, fmm_1->chart(0).vertices);
   EXPECT_EQ(fmm_2->chart(0).uv, fmm_1->chart(0).uv);
   EXPECT_NE(fmm_1->chart(0).uv, graph_1->chart(0).uv);  // two different distances were compared
+  // Graph distances with the repair: the patch copied as a mesh, as with fast marching.
+  const auto repaired_1 = map_on(diffuv::Graph_distance_tag(), 1, true), repaired_2 = map_on(diffuv::Graph_distance_tag(), 2, true);
+  EXPECT_EQ(repaired_2->chart(0).uv, repaired_1->chart(0).uv);
 }
 
 

@@ -45,8 +45,8 @@ class Distance_engine;
 template <class Graph, class HeapTag>
 class Distance_engine<Graph, Graph_distance_tag, HeapTag> {
 public:
-  explicit Distance_engine(const Graph& g) : graph_(g), dijkstra_(g) {}
-  Distance_engine twin() const { return Distance_engine(graph_); }
+  explicit Distance_engine(const Graph& g) : dijkstra_(g) {}
+  Distance_engine twin() const { return Distance_engine(dijkstra_.graph()); }
   template <class SourceRange, class WeightMap, class DistanceMap>
   Status run(const SourceRange& sources, WeightMap weight, DistanceMap distance)
   {
@@ -54,7 +54,6 @@ public:
   }
 
 private:
-  const Graph& graph_;
   Multi_source_dijkstra<Graph, HeapTag> dijkstra_;
 };
 

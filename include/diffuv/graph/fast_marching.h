@@ -296,10 +296,10 @@ private:
         if(state_[u.c] == accepted) continue;
         const Index b = (u.p == a) ? u.q : u.p;
         if(state_[b] != accepted) continue;
-        const double t = internal::planar_wave_update(distance_[u.p], distance_[u.q], u.L, u.cx, u.cy);
-        // d(b) <= d(a) (accepted earlier): t >= da keeps the acceptance order
-        // monotone, which the upper bound by edge paths relies on.
-        if(t >= da) relax(u.c, t);
+        const double through = internal::planar_wave_update(distance_[u.p], distance_[u.q], u.L, u.cx, u.cy);
+        // d(b) <= d(a) (accepted earlier): through >= da keeps the acceptance
+        // order monotone, which the upper bound by edge paths relies on.
+        if(through >= da) relax(u.c, through);
       }
     }
   }
@@ -327,7 +327,8 @@ private:
     t.neighbour_begin.assign(n + 1, 0);
     t.neighbours.clear();
     // Each interior edge is listed from both ends, a border edge from both
-    // too: 2E = 3F + B <= 3F + V on a triangle mesh. Growing the rows by
+    // too: 2E = 3F + B <= 3F + V on a manifold triangle mesh (elsewhere the
+    // rows may still grow past it). Growing the rows by
     // doubling instead touched twice the memory (a third of this
     // constructor's time on a 1.1M-vertex disc was the kernel zeroing pages).
     t.neighbours.reserve(3 * static_cast<std::size_t>(num_faces(graph_)) + n);

@@ -207,7 +207,9 @@ bool border_maps_to_simple_polygon(const TriangleMesh& tm, const FaceRange& face
     std::size_t count = 0, top = 0;
     for(face_descriptor f : faces) {
       ++count;
-      top = (std::max)(top, static_cast<std::size_t>(get(index, f)) + 1);
+      const std::size_t i = static_cast<std::size_t>(get(index, f));
+      if(i >= (std::numeric_limits<std::size_t>::max)() / 16) { top = i; break; }  // no such index: the sorted list
+      top = (std::max)(top, i + 1);
     }
     if(top <= 8 * count) {
       std::vector<bool> marked(top, false);

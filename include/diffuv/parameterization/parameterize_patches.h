@@ -164,9 +164,10 @@ void check_patch_inputs(const TriangleMesh& tm, const Segmentation<TriangleMesh>
 /// copied into a compact graph (`Patch_graph`) for its four runs; otherwise
 /// the runs and the repair walk a `CGAL::Face_filtered_graph` of the mesh.
 /// Patches are mapped in parallel when oneTBB is linked (CMake option
-/// `DIFFUV_WITH_TBB`), and with the paper's method the four passes of a
-/// single patch; the charts are added in patch order, so the atlas and the
-/// results do not depend on the number of threads.
+/// `DIFFUV_WITH_TBB`), and the four passes of a single patch on two threads
+/// (with fast marching, both engines share one set of tables); the charts are
+/// added in patch order, so the atlas and the results do not depend on the
+/// number of threads.
 ///
 /// A patch that fails (not a disc, too short a boundary) gets no chart; the
 /// others are still mapped. A patch whose map is in `options.known_charts`
