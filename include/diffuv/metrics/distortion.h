@@ -12,6 +12,7 @@
 #ifndef DIFFUV_METRICS_DISTORTION_H
 #define DIFFUV_METRICS_DISTORTION_H
 
+#include <diffuv/internal/index_marks.h>
 #include <diffuv/internal/uv_triangle.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -212,16 +213,14 @@ bool border_maps_to_simple_polygon(const TriangleMesh& tm, const FaceRange& face
       top = (std::max)(top, i + 1);
     }
     if(top <= 8 * count) {
-      std::vector<bool> marked(top, false);
-      for(face_descriptor f : faces) {
-        const std::size_t i = static_cast<std::size_t>(get(index, f));
-        if(marked[i]) return false; // listed twice
-        marked[i] = true;
-      }
+      thread_local Index_marks marked;  // kept from chart to chart, at most 8 x the largest such chart
+      marked.reset(top);
+      for(face_descriptor f : faces)
+        if(!marked.insert(static_cast<std::size_t>(get(index, f)))) return false; // listed twice
       auto in_chart = [&](face_descriptor f) {
         if(f == null_face) return false;
         const std::size_t i = static_cast<std::size_t>(get(index, f));
-        return i < top && marked[i];
+        return i < top && marked.contains(i);
       };
       return border_loop_maps_to_simple_polygon(tm, faces, count, in_chart, uv);
     }
