@@ -7,9 +7,11 @@
 
 #include <diffuv/correspondence/correspondence.h>
 #include <diffuv/correspondence/labelled_atlas.h>
+#include <diffuv/correspondence/labelled_atlas_pair.h>
 #include <diffuv/correspondence/nearest_face_labels.h>
 #include <diffuv/correspondence/transfer.h>
 #include <diffuv/layout/disc_patches.h>
+#include <diffuv/parameterization/diffusion_patches.h>
 #include <diffuv/layout/sub_patches.h>
 #include <diffuv/patches/patches_from_labels.h>
 

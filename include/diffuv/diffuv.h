@@ -85,6 +85,7 @@
 #include <diffuv/correspondence/clean_labels.h>
 #include <diffuv/correspondence/correspondence.h>
 #include <diffuv/correspondence/labelled_atlas.h>
+#include <diffuv/correspondence/labelled_atlas_pair.h>
 #include <diffuv/correspondence/nearest_face_labels.h>
 #include <diffuv/correspondence/transfer.h>
 
