@@ -4,6 +4,9 @@
 
 #include <diffuv/core/color.h>
 
+#include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Polygon_mesh_processing/remesh.h>
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -319,6 +322,44 @@ TEST_F(Correspond, CleanedFacesAddUp)
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("; 4 faces relabelled (4 in 1 island, 0 by border smoothing, 0 at 0 pinches))\n"),
             std::string::npos) << r.out;
+}
+
+// A copy of cow 1.6 times coarser, given A's labels by nearest face, with A
+// labelled by `diffuv segment` (the default layout's small patches): the
+// regions the copy loses join a neighbour on both meshes, are listed, and
+// nearly every vertex maps (325 unmapped without the joins, test
+// Correspondence.RegionsACoarseCopyLosesJoinTheirNeighbourOnBothMeshes).
+TEST_F(Correspond, ACoarseCopyWithCarriedLabelsJoinsTheRegionsItLoses)
+{
+  const Tool_run seg = run("segment " + a_ + " -o " + path("layout"));
+  ASSERT_EQ(seg.code, 0) << seg.err;
+  diffuv_test::Mesh coarse = diffuv_test::cgal_mesh("cow.off");
+  double mean_edge = 0.;
+  for(auto e : edges(coarse)) mean_edge += CGAL::Polygon_mesh_processing::edge_length(e, coarse);
+  mean_edge /= num_edges(coarse);
+  CGAL::Polygon_mesh_processing::isotropic_remeshing(faces(coarse), 1.6 * mean_edge, coarse,
+                                                     CGAL::parameters::number_of_iterations(3));
+  coarse.collect_garbage();
+  std::ostringstream b;
+  b.precision(17);
+  b << "OFF\n" << num_vertices(coarse) << ' ' << num_faces(coarse) << " 0\n";
+  for(auto v : vertices(coarse)) b << coarse.point(v) << '\n';
+  for(auto f : faces(coarse)) {
+    b << 3;
+    for(auto v : CGAL::vertices_around_face(coarse.halfedge(f), coarse)) b << ' ' << v.idx();
+    b << '\n';
+  }
+  const Tool_run r = run("correspond " + a_ + ' ' + write("coarse.off", b.str()) + " --labels-a " + path("layout") +
+                         "/a.patches.txt --transfer-labels -o " + out_dir().string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("regions too small for B, joined to a neighbour on both meshes: "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find(" builds), map "), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("labels only in A"), std::string::npos) << r.out;
+  const auto rows = read_csv(out_dir() / "correspondence.csv");
+  ASSERT_EQ(rows.size(), nv_ + 1);
+  std::size_t unmapped = 0;
+  for(std::size_t i = 1; i < rows.size(); ++i) unmapped += rows[i][1] == "-1" ? 1 : 0;
+  EXPECT_LT(unmapped * 50, nv_) << unmapped << " vertices unmapped";
 }
 
 // Patches are named as param names them, and counts agree in number (issue

@@ -5,6 +5,7 @@
 
 #include <diffuv/correspondence/correspondence.h>
 #include <diffuv/correspondence/labelled_atlas.h>
+#include <diffuv/correspondence/labelled_atlas_pair.h>
 #include <diffuv/correspondence/nearest_face_labels.h>
 #include <diffuv/correspondence/transfer.h>
 #include <diffuv/core/color.h>
@@ -163,24 +164,27 @@ void run_correspond(const Correspond_options& o)
   if(!o.values.empty()) value_rows = read_value_rows(o.values, num_vertices(b.mesh), "mesh B");
   const double read_ms = ms_since(start) - transfer_ms;
 
-  diffuv::Labelled_atlas_options options;
-  options.clean = !o.no_clean;
-  options.repair.enabled = o.repair;
-  options.patching.split_caps = !o.no_split_caps;
-  Atlas atlas_a(a.mesh), atlas_b(b.mesh);
-  auto t = Clock::now();
-  with_distance(o.distance, [&](auto tag) {
-    return diffuv::build_labelled_atlas<decltype(tag)>(a.mesh, a.mesh.points(), a.face_labels, atlas_a, options);
-  });
-  const double param_a_ms = ms_since(t);
-  t = Clock::now();
+  diffuv::Labelled_atlas_pair_options options;
+  options.atlas.clean = !o.no_clean;
+  options.atlas.repair.enabled = o.repair;
+  options.atlas.patching.split_caps = !o.no_split_caps;
+  // B's labels carried from A: a label no face of B got is a region too thin
+  // for B's faces, and joins its neighbour on A too. B's own labels: leaving
+  // one out is B's choice, reported below.
+  options.join_labels_missing_in_b = o.transfer_labels;
   // B splits the regions A split, along the same runs, and takes its corners
-  // at the same junctions of regions as A (by name).
-  const auto follow_a = diffuv::atlas_to_follow(atlas_a);
-  with_distance(o.distance, [&](auto tag) {
-    return diffuv::build_labelled_atlas<decltype(tag)>(b.mesh, b.mesh.points(), b.face_labels, follow_a, atlas_b, options);
+  // at the same junctions of regions as A (by name); regions B is too coarse
+  // to keep join their neighbour on both meshes.
+  auto t = Clock::now();
+  diffuv::Labelled_atlas_pair<Mesh> both = with_distance(o.distance, [&](auto tag) {
+    return diffuv::build_labelled_atlas_pair<decltype(tag)>(a.mesh, a.mesh.points(), a.face_labels, b.mesh,
+                                                            b.mesh.points(), b.face_labels, options);
   });
-  const double param_b_ms = ms_since(t);
+  const double param_ms = ms_since(t);
+  if(!both.a || !both.b)
+    throw diffuv::Input_error(both.a ? b.path : a.path, 0, "the atlas could not be built: " + both.status.what());
+  const Atlas& atlas_a = *both.a;
+  const Atlas& atlas_b = *both.b;
 
   t = Clock::now();
   const Correspondence correspondence(atlas_a, atlas_b);
@@ -271,6 +275,11 @@ void run_correspond(const Correspond_options& o)
   if(const std::string repaired = repair_line(b); !repaired.empty()) std::cout << "B " << repaired << '\n';
   std::cout << "regions matched: " << count_text(match.matched_labels.size(), "label") << ", "
             << count_text(match.matched_patches, "patch", "patches") << "\n";
+  if(!both.joined.empty()) {
+    std::vector<int> joined;
+    for(const auto& entry : both.joined) joined.push_back(entry.first);
+    std::cout << "regions too small for B, joined to a neighbour on both meshes: " << label_list(joined) << '\n';
+  }
   if(!match.labels_only_in_a.empty())
     std::cout << "labels only in A (not mapped): " << label_list(match.labels_only_in_a) << '\n';
   if(!match.labels_only_in_b.empty())
@@ -300,8 +309,8 @@ void run_correspond(const Correspond_options& o)
             << (value_rows.empty() ? "" : "; values from " + o.values) << "\n"
             << "time: read " << std::lround(read_ms) << " ms, "
             << (o.transfer_labels && transfer_ms > 0 ? "transfer labels " + std::to_string(std::lround(transfer_ms)) + " ms, " : "")
-            << "parameterize A " << std::lround(param_a_ms)
-            << " ms, B " << std::lround(param_b_ms) << " ms, map " << std::lround(map_ms) << " ms, write "
+            << "parameterize A and B " << std::lround(param_ms)
+            << (both.rounds > 1 ? " ms (" + std::to_string(both.rounds) + " builds)" : std::string(" ms")) << ", map " << std::lround(map_ms) << " ms, write "
             << std::lround(write_ms) << " ms\n" << wrote_line(out.paths()) << '\n';
 }
 
