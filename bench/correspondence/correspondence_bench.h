@@ -81,6 +81,8 @@ struct Atlas_recipe {
   int repair = -1;
   // --sub-patches: regions with 3 or 5..9 runs are split into four-sided sectors (split_regions_into_quads()).
   bool sub_patches = false;
+  // --no-join: regions B lost are left unmapped instead of joined on both meshes (build_labelled_atlas_pair()).
+  bool join = true;
 };
 
 /// Builds the labelled atlas `runs` times; returns the last one and the median
@@ -109,6 +111,8 @@ struct Pair_result {
   std::size_t charts_a = 0, charts_b = 0, patches_a = 0, patches_b = 0, matched = 0;
   std::size_t cleaned_a = 0, cleaned_b = 0;
   std::size_t followed = 0;          // patches of B whose corners followed A's names
+  std::size_t joined = 0;            // regions B lost, joined to a neighbour on both meshes
+  int rounds = 1;                    // builds of both atlases (build_labelled_atlas_pair())
   diffuv::Region_match_report match;
   std::size_t unmapped = 0;
   std::vector<double> error;         // #V(A): geodesic on B / sqrt(area B), inf if unmapped

@@ -66,6 +66,9 @@ std::string diagnose(const Mesh_case& a, const Variant& b, const Labelled& atlas
       << " caps split (A: " << a.atlas->patching.merged << ", " << a.atlas->patching.cut << ", "
       << a.atlas->patching.caps_split << "); " << r.followed << " of B's " << atlas_b.patches.size()
       << " patches took their corners from A's names\n";
+  out << "- regions of A that B lost (to its cleaning, its merging of small patches or the carrying of labels), "
+         "joined to a neighbour on both meshes: "
+      << r.joined << " (" << r.rounds << (r.rounds == 1 ? " build" : " builds") << " of both atlases)\n";
 
   // Faces of B whose cleaned label differs from the label of A's face nearest to them.
   {

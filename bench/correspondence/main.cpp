@@ -2,7 +2,7 @@
 // truth is known.
 //
 // Mesh A is one of CGAL's closed meshes, cut into disc patches automatically
-// (what `diffuv segment` does); mesh B is the same surface tessellated another
+// (what `diffuv segment` does: diffusion_patches()); mesh B is the same surface tessellated another
 // way:
 //   fine      isotropic remeshing at 0.7 x A's mean edge length (3 iterations)
 //   coarse    the same at 1.6 x
@@ -20,12 +20,14 @@
 // true point, over sqrt(area of B). Also measured: the round trip A -> B -> A,
 // the seam continuity (a vertex on a patch border mapped from each of its
 // charts), and the time of the mapping apart from the two parameterizations.
-// B's atlas follows A's sub-patches and corners (`atlas_to_follow()`, as the `correspond`
-// tool does) unless --no-follow is given.
+// Both atlases are built as the `correspond` tool builds them with
+// --transfer-labels (build_labelled_atlas_pair()): B's atlas follows A's
+// sub-patches and corners (`atlas_to_follow()`) unless --no-follow is given,
+// and a region B loses joins its neighbour on both meshes unless --no-join.
 //
 // Usage: diffuv_correspondence_bench [--meshes cow,man,elephant,hand]
 //          [--pairs fine,coarse,shuffled,loop,noise] [--runs 3] [--output DIR]
-//          [--distance fmm|graph|exact] [--no-follow] [--sub-patches]
+//          [--distance fmm|graph|exact] [--no-follow] [--no-join] [--sub-patches]
 //          [--labels quads|voronoi] [--self-check]
 // Writes DIR/table.md, DIR/curves.csv, DIR/correspondence_<mesh>.png and
 // DIR/diagnostics.md (where the errors are); prints the table on stdout and
@@ -44,6 +46,7 @@
 #include "plot_png.h"
 
 #include <diffuv/layout/disc_patches.h>
+#include <diffuv/parameterization/diffusion_patches.h>
 
 #include <CGAL/Polygon_mesh_processing/measure.h>
 
@@ -70,14 +73,18 @@ int run(const Options& o)
     a.mean_edge = mean_edge_length(a.mesh);
 
     // A's labels: automatic disc patches, as `diffuv segment` makes them
-    // (--labels quads), or the Voronoi patches of diffuv 0.1 (--labels
-    // voronoi: regions of three to eight runs, like painted ones).
+    // (--labels quads: the four-sided layout refined until each patch's raw
+    // map serves, diffusion_patches()), or the Voronoi patches of diffuv 0.1
+    // (--labels voronoi: regions of three to eight runs, like painted ones).
     const auto t0 = Clock::now();
     diffuv::Segmentation<Mesh> seg;
     diffuv::Patching_report report;
     diffuv::Patching_options patching;
     if(o.labels == "voronoi") patching.layout = diffuv::Patch_layout::voronoi;
-    diffuv::disc_patches(a.mesh, a.mesh.points(), std::vector<int>{}, seg, patching, &report);
+    if(o.labels == "voronoi")
+      diffuv::disc_patches(a.mesh, a.mesh.points(), std::vector<int>{}, seg, patching, &report);
+    else
+      diffuv::diffusion_patches(a.mesh, a.mesh.points(), std::vector<int>{}, seg, patching, &report);
     a.labels.assign(a.mesh.number_of_faces(), 0);
     for(auto f : a.mesh.faces()) a.labels[f.idx()] = static_cast<int>(seg.face_patch[f.idx()]);
     a.automatic_patches = seg.number_of_patches();
@@ -180,6 +187,9 @@ int main(int argc, char** argv)
       ->capture_default_str();
   app.add_flag("--sub-patches", o.atlas.sub_patches,
                "Split regions with three or five to nine runs of neighbours into four-sided sectors (split_regions_into_quads())");
+  app.add_flag("!--no-join", o.atlas.join,
+               "Leave the regions B loses (to its cleaning, its merging or the carrying of labels) unmapped, instead "
+               "of joining each to its neighbour on both meshes (build_labelled_atlas_pair())");
   app.add_flag("--self-check", o.self_check,
                "Only check the local exact geodesics against Surface_mesh_shortest_path on the whole of cow.off");
   app.footer("Exit codes: 0 every target met, 1 a target missed (or the self-check failed), 4 error.");

@@ -5,6 +5,7 @@
 
 #include "correspondence/geodesic_distance.h"
 
+#include <diffuv/correspondence/labelled_atlas_pair.h>
 #include <diffuv/graph/distance_tags.h>
 
 #include <CGAL/Polygon_mesh_processing/measure.h>
@@ -36,6 +37,54 @@ diffuv::Status build_atlas(const Mesh& m, const std::vector<int>& labels, Labell
   }
   return diffuv::Status();
 }
+
+// Both atlases built together (build_labelled_atlas_pair()): regions B lost
+// join their neighbour on both meshes. B's labels are carried from A's here.
+diffuv::Labelled_atlas_pair<Mesh> build_pair(const Mesh& a, const std::vector<int>& labels_a, const Mesh& b,
+                                             const std::vector<int>& labels_b, const Atlas_recipe& recipe, bool follow)
+{
+  diffuv::Labelled_atlas_pair_options options;
+  if(recipe.repair >= 0) options.atlas.repair.enabled = recipe.repair == 1;
+  options.atlas.sub_patches = recipe.sub_patches;
+  options.follow = follow;
+  options.join_labels_missing_in_b = true;
+  if(!recipe.join) options.max_rounds = 1;
+  auto build = [&](auto tag) {
+    return diffuv::build_labelled_atlas_pair<decltype(tag)>(a, a.points(), labels_a, b, b.points(), labels_b, options);
+  };
+  switch(recipe.distance) {
+  case Distance::graph: return build(diffuv::Graph_distance_tag());
+  case Distance::exact: return build(diffuv::Exact_distance_tag());
+  case Distance::fmm: break;
+  }
+  return build(diffuv::Fmm_distance_tag());
+}
+
+// A's atlas (and its seam rings) replaced for one pair, put back after it.
+class Atlas_of_a_for_this_pair {
+public:
+  Atlas_of_a_for_this_pair(Mesh_case& a, std::unique_ptr<Labelled> atlas) : a_(a)
+  {
+    if(!atlas) return;
+    saved_ = std::move(a.atlas);
+    saved_ring_ = std::move(a.ring);
+    a.atlas = std::move(atlas);
+    a.ring = seam_rings(a.mesh, *a.atlas);
+  }
+  ~Atlas_of_a_for_this_pair()
+  {
+    if(!saved_) return;
+    a_.atlas = std::move(saved_);
+    a_.ring = std::move(saved_ring_);
+  }
+  Atlas_of_a_for_this_pair(const Atlas_of_a_for_this_pair&) = delete;
+  Atlas_of_a_for_this_pair& operator=(const Atlas_of_a_for_this_pair&) = delete;
+
+private:
+  Mesh_case& a_;
+  std::unique_ptr<Labelled> saved_;
+  std::vector<int> saved_ring_;
+};
 
 } // namespace
 
@@ -90,10 +139,20 @@ Pair_result run_pair(Mesh_case& a, const std::string& pair, const Atlas_recipe& 
   std::cerr << "[" << a.name << "/" << pair << "] B: " << r.vertices_b << " vertices, " << r.faces_b << " faces ("
             << format("%.0f", ms_since(t_variant)) << " ms to make)\n";
 
-  // B follows A's corners (as the `correspond` tool and the example do) unless told not to.
+  // Both atlases as the `correspond` tool builds them with --transfer-labels:
+  // regions B is too coarse to keep join their neighbour on both meshes, and
+  // B follows A's corners unless told not to. A's atlas is then built again
+  // for this pair only; B's is timed as A's was, from the joined labels.
+  diffuv::Labelled_atlas_pair<Mesh> both = build_pair(a.mesh, a.labels, b.mesh, b.labels, recipe, follow);
+  if(!both.status.ok()) throw std::runtime_error("build_labelled_atlas_pair failed: " + both.status.what());
+  r.rounds = both.rounds;
+  r.joined = both.joined.size();
+  const Atlas_of_a_for_this_pair a_for_this_pair(a, both.joined.empty() ? nullptr : std::move(both.a));
+  std::vector<int> labels_b = b.labels;
+  diffuv::join_labels(labels_b, both.joined);
   const diffuv::Atlas_to_follow follow_a = diffuv::atlas_to_follow(*a.atlas);
   std::unique_ptr<Labelled> atlas_b =
-      timed_atlas(b.mesh, b.labels, recipe, runs, r.param_b_ms, follow ? &follow_a : nullptr);
+      timed_atlas(b.mesh, labels_b, recipe, runs, r.param_b_ms, follow ? &follow_a : nullptr);
   for(const auto& patch : atlas_b->patches) r.followed += patch.side_report.named ? 1 : 0;
   r.param_a_ms = a.param_ms;
 
@@ -119,7 +178,8 @@ Pair_result run_pair(Mesh_case& a, const std::string& pair, const Atlas_recipe& 
   r.cleaned_b = atlas_b->cleaning.changed_faces();
   std::cerr << "[" << a.name << "/" << pair << "] param B " << format("%.1f", r.param_b_ms) << " ms, map "
             << format("%.1f", r.map_ms) << " ms; " << r.matched << "/" << r.charts_a << " charts matched ("
-            << r.charts_b << " in B); measuring errors\n";
+            << r.charts_b << " in B); " << r.joined << " regions lost by B joined in " << r.rounds
+            << (r.rounds == 1 ? " build" : " builds") << "; measuring errors\n";
 
   // Errors against the truth, and the round trip.
   const auto t_errors = Clock::now();

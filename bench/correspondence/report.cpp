@@ -41,6 +41,7 @@ std::string table(const std::vector<Pair_result>& results, const Options& o)
       << (o.follow ? "B's atlas follows A's sub-patches and corners (atlas_to_follow)" : "B's atlas built on its own (--no-follow)")
       << "; A's regions: " << (o.labels == "voronoi" ? "diffuv 0.1's Voronoi patches" : "the four-sided layout's patches")
       << "; sub-patches " << (o.atlas.sub_patches ? "on (--sub-patches)" : "off")
+      << "; regions B loses " << (o.atlas.join ? "joined to a neighbour on both meshes" : "left unmapped (--no-join)")
       << "; times in ms, median of " << o.runs << " run" << (o.runs > 1 ? "s" : "") << ".\n\n";
   out << "| mesh | pair | A verts | B verts | charts matched | cleaned faces A/B | unmapped | mean | p95 | max | "
          "% <= 0.01 | % <= 0.05 | round trip mean | round trip p95 | seam mean | seam p95 | seam max | t_param A | t_param B | "
