@@ -1,11 +1,9 @@
 // Tests of `diffuv correspond`: cow and a shuffled, moved copy of it, mapped
-// vertex by vertex through matching labels.
+// vertex by vertex through matching labels; a coarse copy with carried labels.
 #include "test_cli_tool.h"
+#include "test_remeshed_copy.h"
 
 #include <diffuv/core/color.h>
-
-#include <CGAL/Polygon_mesh_processing/measure.h>
-#include <CGAL/Polygon_mesh_processing/remesh.h>
 
 #include <gtest/gtest.h>
 
@@ -333,13 +331,7 @@ TEST_F(Correspond, ACoarseCopyWithCarriedLabelsJoinsTheRegionsItLoses)
 {
   const Tool_run seg = run("segment " + a_ + " -o " + path("layout"));
   ASSERT_EQ(seg.code, 0) << seg.err;
-  diffuv_test::Mesh coarse = diffuv_test::cgal_mesh("cow.off");
-  double mean_edge = 0.;
-  for(auto e : edges(coarse)) mean_edge += CGAL::Polygon_mesh_processing::edge_length(e, coarse);
-  mean_edge /= num_edges(coarse);
-  CGAL::Polygon_mesh_processing::isotropic_remeshing(faces(coarse), 1.6 * mean_edge, coarse,
-                                                     CGAL::parameters::number_of_iterations(3));
-  coarse.collect_garbage();
+  const diffuv_test::Mesh coarse = diffuv_test::remeshed_copy(diffuv_test::cgal_mesh("cow.off"), 1.6);
   std::ostringstream b;
   b.precision(17);
   b << "OFF\n" << num_vertices(coarse) << ' ' << num_faces(coarse) << " 0\n";

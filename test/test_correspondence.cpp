@@ -3,6 +3,7 @@
 // cleaning, and attribute transfer.
 #include "test_data.h"
 #include "test_correspondence_data.h"
+#include "test_remeshed_copy.h"
 
 namespace {
 
@@ -225,13 +226,7 @@ TEST(Correspondence, RegionsACoarseCopyLosesJoinTheirNeighbourOnBothMeshes)
   ASSERT_TRUE(diffuv::diffusion_patches(a, a.points(), std::vector<int>(), seg).ok());
   std::vector<int> labels(num_faces(a));
   for(auto f : faces(a)) labels[f.idx()] = static_cast<int>(seg.face_patch[f.idx()]);
-  Mesh b = a;
-  double mean_edge = 0.;
-  for(auto e : edges(a)) mean_edge += CGAL::Polygon_mesh_processing::edge_length(e, a);
-  mean_edge /= num_edges(a);
-  CGAL::Polygon_mesh_processing::isotropic_remeshing(faces(b), 1.6 * mean_edge, b,
-                                                     CGAL::parameters::number_of_iterations(3));
-  b.collect_garbage();
+  const Mesh b = diffuv_test::remeshed_copy(a, 1.6);
   const std::vector<int> labels_b = diffuv::nearest_face_labels(a, labels, b);
 
   diffuv::Labelled_atlas_pair_options once, joining;
