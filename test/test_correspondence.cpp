@@ -13,6 +13,14 @@ TEST(Correspondence, NoLabelsIsAnError)
   const diffuv::Status s = diffuv::build_labelled_atlas(cow(), cow().points(), std::vector<int>(), atlas);
   EXPECT_EQ(s.code, diffuv::Status_code::no_labels);
   EXPECT_NE(std::string(s.what()).find("no region labels"), std::string::npos);
+  // The pair says so too, and holds no atlas: B without labels, then A.
+  const std::vector<int> labels = segment_labels(cow());
+  const auto no_b = diffuv::build_labelled_atlas_pair(cow(), cow().points(), labels, cow(), cow().points(), std::vector<int>());
+  EXPECT_EQ(no_b.status.code, diffuv::Status_code::no_labels);
+  EXPECT_TRUE(!no_b.a && !no_b.b);
+  const auto no_a = diffuv::build_labelled_atlas_pair(cow(), cow().points(), std::vector<int>(), cow(), cow().points(), labels);
+  EXPECT_EQ(no_a.status.code, diffuv::Status_code::no_labels);
+  EXPECT_TRUE(!no_a.a && !no_a.b);
 }
 
 // The shuffled pair: every vertex lands on its own copy, whatever the order,

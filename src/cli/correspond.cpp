@@ -181,8 +181,8 @@ void run_correspond(const Correspond_options& o)
                                                             b.mesh.points(), b.face_labels, options);
   });
   const double param_ms = ms_since(t);
-  if(!both.a || !both.b)
-    throw diffuv::Input_error(both.a ? b.path : a.path, 0, "the atlas could not be built: " + both.status.what());
+  if(!both.status)  // only no labels; both meshes have them here
+    throw diffuv::Input_error(a.path, 0, "the atlases could not be built: " + both.status.what());
   const Atlas& atlas_a = *both.a;
   const Atlas& atlas_b = *both.b;
 

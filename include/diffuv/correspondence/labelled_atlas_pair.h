@@ -42,7 +42,7 @@ struct Labelled_atlas_pair_options {
 /// Two atlases built together (`build_labelled_atlas_pair()`).
 template <class TriangleMesh>
 struct Labelled_atlas_pair {
-  std::unique_ptr<Labelled_atlas<TriangleMesh>> a, b;
+  std::unique_ptr<Labelled_atlas<TriangleMesh>> a, b;  ///< null if `status` is not ok
   /// Labels that joined another region on both meshes, each with the label of
   /// the region it is part of in the end.
   std::map<int, int> joined;
@@ -138,7 +138,8 @@ inline void join_labels(std::vector<int>& labels, const std::map<int, int>& join
 /// counterpart at all (measured in doc/correspondence.md).
 ///
 /// \param labels_a, labels_b #F entries of each mesh (by face index)
-/// \returns the atlases (null if a build failed: see `status`), the joins and the rounds
+/// \returns the atlases (both null if a build failed: see `status`; only
+///          `no_labels` can fail, when a label vector is empty), the joins and the rounds
 /// \throws std::invalid_argument if a label vector has neither 0 nor #F entries
 template <class DistanceTag = Default_distance_tag, class TriangleMesh, class VertexPointMapA, class VertexPointMapB>
 Labelled_atlas_pair<TriangleMesh> build_labelled_atlas_pair(const TriangleMesh& tm_a, VertexPointMapA vpm_a,
@@ -152,11 +153,15 @@ Labelled_atlas_pair<TriangleMesh> build_labelled_atlas_pair(const TriangleMesh& 
     auto a = std::make_unique<Labelled_atlas<TriangleMesh>>(tm_a);
     auto b = std::make_unique<Labelled_atlas<TriangleMesh>>(tm_b);
     out.status = build_labelled_atlas<DistanceTag>(tm_a, vpm_a, labels_a, *a, options.atlas);
-    if(!out.status) return out;
-    out.status = options.follow
-                     ? build_labelled_atlas<DistanceTag>(tm_b, vpm_b, labels_b, atlas_to_follow(*a), *b, options.atlas)
-                     : build_labelled_atlas<DistanceTag>(tm_b, vpm_b, labels_b, *b, options.atlas);
-    if(!out.status) return out;
+    if(out.status)
+      out.status = options.follow
+                       ? build_labelled_atlas<DistanceTag>(tm_b, vpm_b, labels_b, atlas_to_follow(*a), *b, options.atlas)
+                       : build_labelled_atlas<DistanceTag>(tm_b, vpm_b, labels_b, *b, options.atlas);
+    if(!out.status) {
+      out.a.reset();
+      out.b.reset();
+      return out;
+    }
     out.a = std::move(a);
     out.b = std::move(b);
     out.rounds = round + 1;
