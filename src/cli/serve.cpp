@@ -9,6 +9,7 @@
 
 #include <diffuv/correspondence/correspondence.h>
 #include <diffuv/correspondence/labelled_atlas.h>
+#include <diffuv/correspondence/labelled_atlas_pair.h>
 #include <diffuv/correspondence/nearest_face_labels.h>
 #include <diffuv/output/write_ply.h>
 #include <diffuv/patches/patch_names.h>
@@ -502,14 +503,22 @@ json correspond(const Painter& a, const Painter& b, const std::string& body, Cor
                                    std::to_string(std::lround(100. * lying.median_fraction())) +
                                    " % of A's diagonal): \"transfer_labels\" needs a copy of A in A's place; paint B's regions"};
     }
-    auto atlas_a = std::make_unique<Labelled>(ma), atlas_b = std::make_unique<Labelled>(mb);
+    // As `diffuv correspond` builds them: regions B loses join their
+    // neighbour on both meshes (by the longest border too when B's labels
+    // were carried from A).
+    diffuv::Labelled_atlas_pair_options pairing;
+    pairing.join_labels_missing_in_b = sent_b.empty();
+    diffuv::Labelled_atlas_pair<Mesh> both;
     try {
-      diffuv::build_labelled_atlas<diffuv::Fmm_distance_tag>(ma, ma.points(), labels_a, *atlas_a);
-      diffuv::build_labelled_atlas<diffuv::Fmm_distance_tag>(mb, mb.points(), labels_b, diffuv::atlas_to_follow(*atlas_a),
-                                                             *atlas_b);
+      both = diffuv::build_labelled_atlas_pair<diffuv::Fmm_distance_tag>(ma, ma.points(), labels_a, mb, mb.points(),
+                                                                         labels_b, pairing);
     } catch(const diffuv::Error& e) {
       throw Bad_request{422, e.what()};
     }
+    if(!both.status) throw Bad_request{422, both.status.what()};
+    std::unique_ptr<Labelled> atlas_a = std::move(both.a), atlas_b = std::move(both.b);
+    std::vector<int> joined;
+    for(const auto& entry : both.joined) joined.push_back(entry.first);
     auto correspondence = std::make_unique<Correspondence>(*atlas_a, *atlas_b);
     const diffuv::Region_match_report& match = correspondence->report();
 
@@ -561,6 +570,8 @@ json correspond(const Painter& a, const Painter& b, const std::string& body, Cor
       problems.push_back("patches of A without a counterpart on B: " + as_text(names(match.unmatched_patches_a)));
     if(!match.unmatched_patches_b.empty())
       problems.push_back("patches of B without a counterpart on A: " + as_text(names(match.unmatched_patches_b)));
+    if(!joined.empty())
+      problems.push_back("regions too small for B, joined to a neighbour on both meshes: " + as_text(json(joined)));
     if(!match.labels_with_different_pieces.empty())
       problems.push_back("labels cut into a different number of patches on A and B (their pieces pair by decreasing "
                          "area: check them): " + as_text(json(match.labels_with_different_pieces)));
@@ -584,6 +595,7 @@ json correspond(const Painter& a, const Painter& b, const std::string& body, Cor
                       {"unmatched_patches_a", names(match.unmatched_patches_a)},
                       {"unmatched_patches_b", names(match.unmatched_patches_b)},
                       {"labels_with_different_pieces", match.labels_with_different_pieces},
+                      {"joined_labels", joined},
                       {"vertices", num_vertices(ma)},
                       {"mapped", mapped},
                       {"inside", inside}}},
