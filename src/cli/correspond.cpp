@@ -276,9 +276,16 @@ void run_correspond(const Correspond_options& o)
   std::cout << "regions matched: " << count_text(match.matched_labels.size(), "label") << ", "
             << count_text(match.matched_patches, "patch", "patches") << "\n";
   if(!both.joined.empty()) {
-    std::vector<int> joined;
-    for(const auto& entry : both.joined) joined.push_back(entry.first);
-    std::cout << "regions too small for B, joined to a neighbour on both meshes: " << label_list(joined) << '\n';
+    // All of them, each with the region it ended in, so that a user can
+    // check them; the patch counts above are after these joins.
+    std::cout << "regions too small for B, joined to a neighbour on both meshes (the patches above are counted after "
+                 "the joins; label -> the region it joined): ";
+    const char* comma = "";
+    for(const auto& [label, region] : both.joined) {
+      std::cout << comma << label << " -> " << region;
+      comma = ", ";
+    }
+    std::cout << '\n';
   }
   if(!match.labels_only_in_a.empty())
     std::cout << "labels only in A (not mapped): " << label_list(match.labels_only_in_a) << '\n';
@@ -331,7 +338,12 @@ void add_correspond_command(CLI::App& app)
       cmd->add_option("--labels-b", options->labels_b, "Region label file of B (the same labels name the same regions)");
   cmd->add_flag("--transfer-labels", options->transfer_labels,
                 "Give each face of B the label of A's nearest face, instead of --labels-b or regions painted in B "
-                "(only meaningful when B lies on top of A, e.g. a remeshed copy; B's colours are then data to carry)")
+                "(only meaningful when B lies on top of A, e.g. a remeshed copy; B's colours are then data to carry). "
+                "A region of A that B is too coarse to keep (its cleaning or its merging of small patches gives it "
+                "away, or no face of B is nearest to it) then joins its neighbour on both meshes, both atlases are "
+                "built again (the time line counts the builds), and the joined labels are listed. Without it, only "
+                "regions that B's cleaning or merging gives away are joined; a label B's own labels leave out is "
+                "reported as only in A")
       ->excludes(labels_b);
   cmd->add_option("--values", options->values,
                   "Text file with one row of numbers per vertex of B (scalars, colours, texture coordinates...): "
