@@ -346,8 +346,8 @@ TEST_F(Correspond, ACoarseCopyWithCarriedLabelsJoinsTheRegionsItLoses)
   ASSERT_EQ(r.code, 0) << r.err;
   const std::size_t line = r.out.find("regions too small for B, joined to a neighbour on both meshes");
   ASSERT_NE(line, std::string::npos) << r.out;
-  // Every joined label is listed with the region it joined: as many arrows as
-  // the labels of A's layout that are no longer A's patches' labels.
+  // Every joined label is listed with the region it joined, none cut off
+  // (the library's test measured 77 joins on this copy).
   const std::string joined = r.out.substr(line, r.out.find('\n', line) - line);
   std::size_t arrows = 0;
   for(std::size_t at = joined.find(" -> "); at != std::string::npos; at = joined.find(" -> ", at + 1)) ++arrows;

@@ -222,6 +222,54 @@ TEST(Correspondence, LabelLeftOutOfBJoinsANeighbourOnlyWhenBsLabelsWereCarried)
   for(const auto& image : c.map_vertices()) EXPECT_TRUE(image.mapped());
 }
 
+// A stray face of a lost label elsewhere on B, given away there, does not
+// make the label join a region that is not its neighbour on A.
+TEST(Correspondence, AStrayFaceOfALostLabelFarAwayJoinsNothing)
+{
+  const Mesh& a = cow();
+  const std::vector<int> labels = segment_labels(a);
+  const Moved_copy b = shuffled_moved_copy(a, 5, false);
+  std::vector<int> labels_b = carry_labels(labels, b);
+  std::set<int> next_to_3;
+  int neighbour = -1;
+  for(auto h : halfedges(a))
+    if(!a.is_border(h) && !a.is_border(a.opposite(h)) && labels[a.face(h).idx()] == 3 &&
+       labels[a.face(a.opposite(h)).idx()] != 3) {
+      neighbour = labels[a.face(a.opposite(h)).idx()];
+      next_to_3.insert(neighbour);
+    }
+  ASSERT_GE(neighbour, 0);
+  for(int& l : labels_b)
+    if(l == 3) l = neighbour;
+  // The stray face: deep inside a region that does not touch region 3.
+  face_descriptor stray;
+  for(auto f : faces(a)) {
+    if(labels[f.idx()] == 3 || next_to_3.count(labels[f.idx()])) continue;
+    bool inside = true;
+    for(auto h : CGAL::halfedges_around_face(a.halfedge(f), a))
+      inside = inside && labels[a.face(a.opposite(h)).idx()] == labels[f.idx()];
+    if(inside) {
+      stray = f;
+      break;
+    }
+  }
+  ASSERT_NE(stray, Mesh::null_face());
+  labels_b[b.face_of[stray.idx()].idx()] = 3;
+
+  const auto both = diffuv::build_labelled_atlas_pair(a, a.points(), labels, b.mesh, b.mesh.points(), labels_b);
+  ASSERT_TRUE(both.status.ok());
+  EXPECT_TRUE(both.joined.empty()) << both.joined.begin()->first << " -> " << both.joined.begin()->second;
+  EXPECT_EQ(Correspondence(*both.a, *both.b).report().labels_only_in_a, std::vector<int>{3});
+}
+
+// join_labels() follows chains to their end, and leaves other labels alone.
+TEST(Correspondence, JoinLabelsFollowsChains)
+{
+  std::vector<int> labels = {1, 2, 3, 4, 5, 1};
+  diffuv::join_labels(labels, {{1, 2}, {2, 4}, {5, 7}});
+  EXPECT_EQ(labels, (std::vector<int>{4, 4, 3, 4, 7, 4}));
+}
+
 // A coarse copy of cow (isotropic remeshing to 1.6 times the mean edge) with
 // the labels of A's nearest faces, A's labels the default layout's patches
 // (what `diffuv segment` writes): the small patches lose their faces to B's

@@ -517,8 +517,8 @@ json correspond(const Painter& a, const Painter& b, const std::string& body, Cor
     }
     if(!both.status) throw Bad_request{422, both.status.what()};
     std::unique_ptr<Labelled> atlas_a = std::move(both.a), atlas_b = std::move(both.b);
-    std::vector<int> joined;
-    for(const auto& entry : both.joined) joined.push_back(entry.first);
+    json joined = json::array();  // [label, the region it joined]
+    for(const auto& [label, region] : both.joined) joined.push_back({label, region});
     auto correspondence = std::make_unique<Correspondence>(*atlas_a, *atlas_b);
     const diffuv::Region_match_report& match = correspondence->report();
 
@@ -571,7 +571,8 @@ json correspond(const Painter& a, const Painter& b, const std::string& body, Cor
     if(!match.unmatched_patches_b.empty())
       problems.push_back("patches of B without a counterpart on A: " + as_text(names(match.unmatched_patches_b)));
     if(!joined.empty())
-      problems.push_back("regions too small for B, joined to a neighbour on both meshes: " + as_text(json(joined)));
+      problems.push_back("regions too small for B, joined to a neighbour on both meshes ([label, the region it joined]): " +
+                         as_text(joined));
     if(!match.labels_with_different_pieces.empty())
       problems.push_back("labels cut into a different number of patches on A and B (their pieces pair by decreasing "
                          "area: check them): " + as_text(json(match.labels_with_different_pieces)));
