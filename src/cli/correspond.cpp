@@ -168,9 +168,11 @@ void run_correspond(const Correspond_options& o)
   options.atlas.clean = !o.no_clean;
   options.atlas.repair.enabled = o.repair;
   options.atlas.patching.split_caps = !o.no_split_caps;
-  // B's labels carried from A: a label no face of B got is a region too thin
-  // for B's faces, and joins its neighbour on A too. B's own labels: leaving
-  // one out is B's choice, reported below.
+  // B's labels carried from A: a lost region joins where most of its faces
+  // of B went, and a label no face of B got (a region too thin for B's faces)
+  // joins its neighbour across the longest border. B's own labels: only a
+  // region touching it on A can take it in, and a label B leaves out is B's
+  // choice, reported below.
   options.join_labels_missing_in_b = o.transfer_labels;
   // B splits the regions A split, along the same runs, and takes its corners
   // at the same junctions of regions as A (by name); regions B is too coarse
