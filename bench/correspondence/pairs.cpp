@@ -18,24 +18,36 @@ namespace diffuv_bench {
 
 namespace {
 
-// `follow`: the sub-patches and corners of another atlas to follow (atlas_to_follow()), or null.
-diffuv::Status build_atlas(const Mesh& m, const std::vector<int>& labels, Labelled& out, const Atlas_recipe& recipe,
-                           const diffuv::Atlas_to_follow* follow)
+// Calls build(tag) with the distance tag the recipe names.
+template <class Build>
+auto with_distance_tag(const Atlas_recipe& recipe, Build build)
+{
+  switch(recipe.distance) {
+  case Distance::graph: return build(diffuv::Graph_distance_tag());
+  case Distance::exact: return build(diffuv::Exact_distance_tag());
+  case Distance::fmm: break;
+  }
+  return build(diffuv::Fmm_distance_tag());
+}
+
+diffuv::Labelled_atlas_options atlas_options(const Atlas_recipe& recipe)
 {
   diffuv::Labelled_atlas_options options;
   if(recipe.repair >= 0) options.repair.enabled = recipe.repair == 1;
   options.sub_patches = recipe.sub_patches;
-  auto build = [&](auto tag) {
+  return options;
+}
+
+// `follow`: the sub-patches and corners of another atlas to follow (atlas_to_follow()), or null.
+diffuv::Status build_atlas(const Mesh& m, const std::vector<int>& labels, Labelled& out, const Atlas_recipe& recipe,
+                           const diffuv::Atlas_to_follow* follow)
+{
+  const diffuv::Labelled_atlas_options options = atlas_options(recipe);
+  return with_distance_tag(recipe, [&](auto tag) {
     using Tag = decltype(tag);
     return follow ? diffuv::build_labelled_atlas<Tag>(m, m.points(), labels, *follow, out, options)
                   : diffuv::build_labelled_atlas<Tag>(m, m.points(), labels, out, options);
-  };
-  switch(recipe.distance) {
-  case Distance::fmm: return build(diffuv::Fmm_distance_tag());
-  case Distance::graph: return build(diffuv::Graph_distance_tag());
-  case Distance::exact: return build(diffuv::Exact_distance_tag());
-  }
-  return diffuv::Status();
+  });
 }
 
 // Both atlases built together (build_labelled_atlas_pair()): regions B lost
@@ -44,20 +56,13 @@ diffuv::Labelled_atlas_pair<Mesh> build_pair(const Mesh& a, const std::vector<in
                                              const std::vector<int>& labels_b, const Atlas_recipe& recipe, bool follow)
 {
   diffuv::Labelled_atlas_pair_options options;
-  if(recipe.repair >= 0) options.atlas.repair.enabled = recipe.repair == 1;
-  options.atlas.sub_patches = recipe.sub_patches;
+  options.atlas = atlas_options(recipe);
   options.follow = follow;
   options.join_labels_missing_in_b = true;
   if(!recipe.join) options.max_rounds = 1;
-  auto build = [&](auto tag) {
+  return with_distance_tag(recipe, [&](auto tag) {
     return diffuv::build_labelled_atlas_pair<decltype(tag)>(a, a.points(), labels_a, b, b.points(), labels_b, options);
-  };
-  switch(recipe.distance) {
-  case Distance::graph: return build(diffuv::Graph_distance_tag());
-  case Distance::exact: return build(diffuv::Exact_distance_tag());
-  case Distance::fmm: break;
-  }
-  return build(diffuv::Fmm_distance_tag());
+  });
 }
 
 // A's atlas (and its seam rings) replaced for one pair, put back after it.

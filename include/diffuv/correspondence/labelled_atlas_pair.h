@@ -78,9 +78,12 @@ std::map<int, int> labels_to_join(const TriangleMesh& tm_a, VertexPointMap vpm_a
     if(!in_b.count(label)) lost.insert(label);
   constexpr std::size_t no_patch = Segmentation<TriangleMesh>::no_patch;
 
-  // The lost labels' neighbours on A that B kept: by a shared vertex (B's
-  // borders differ from A's, so its faces may go to a region that only
-  // touches the lost one at a corner on A), and the length of shared border.
+  if(lost.empty()) return {};
+
+  // The lost labels' neighbours on A that B kept. With B's own labels: the
+  // regions touching each by a shared vertex (B's borders differ from A's, so
+  // its faces may go to a region that only touches the lost one at a corner
+  // on A). With carried labels: the length of border shared with each.
   const auto findex_a = get(boost::face_index, tm_a);
   auto label_a = [&](auto f) -> int {
     if(f == boost::graph_traits<TriangleMesh>::null_face()) return -1;
@@ -88,24 +91,28 @@ std::map<int, int> labels_to_join(const TriangleMesh& tm_a, VertexPointMap vpm_a
     return p == no_patch ? -1 : seg_a.patch_label[p];
   };
   std::map<int, std::set<int>> touching;
-  for(auto v : vertices(tm_a)) {
-    if(halfedge(v, tm_a) == boost::graph_traits<TriangleMesh>::null_halfedge()) continue;  // isolated
-    std::set<int> around;
-    for(auto f : CGAL::faces_around_target(halfedge(v, tm_a), tm_a))
-      if(const int l = label_a(f); l >= 0) around.insert(l);
-    for(int gone : around)
-      if(!in_b.count(gone))
-        for(int kept : around)
-          if(in_b.count(kept)) touching[gone].insert(kept);
-  }
   std::map<int, std::map<int, double>> border;
-  for(auto e : edges(tm_a)) {
-    const auto h = halfedge(e, tm_a);
-    const int lf = label_a(face(h, tm_a)), lg = label_a(face(opposite(h, tm_a), tm_a));
-    if(lf == lg || lf < 0 || lg < 0 || in_b.count(lf) == in_b.count(lg)) continue;
-    const double length = std::sqrt(CGAL::squared_distance(get(vpm_a, source(h, tm_a)), get(vpm_a, target(h, tm_a))));
-    if(in_b.count(lg)) border[lf][lg] += length;
-    else border[lg][lf] += length;
+  if(!join_labels_missing_in_b) {
+    for(auto v : vertices(tm_a)) {
+      if(halfedge(v, tm_a) == boost::graph_traits<TriangleMesh>::null_halfedge()) continue;  // isolated
+      std::set<int> around;
+      for(auto f : CGAL::faces_around_target(halfedge(v, tm_a), tm_a))
+        if(const int l = label_a(f); l >= 0) around.insert(l);
+      for(int gone : around)
+        if(lost.count(gone))
+          for(int kept : around)
+            if(in_b.count(kept)) touching[gone].insert(kept);
+    }
+  } else {
+    for(auto e : edges(tm_a)) {
+      const auto h = halfedge(e, tm_a);
+      const int lf = label_a(face(h, tm_a)), lg = label_a(face(opposite(h, tm_a), tm_a));
+      if(lf == lg || lf < 0 || lg < 0 || in_b.count(lf) == in_b.count(lg)) continue;
+      const double length =
+          std::sqrt(CGAL::squared_distance(get(vpm_a, source(h, tm_a)), get(vpm_a, target(h, tm_a))));
+      if(in_b.count(lg)) border[lf][lg] += length;
+      else border[lg][lf] += length;
+    }
   }
 
   // Votes: the final labels of B's faces that carried a lost label. B's own
