@@ -17,6 +17,8 @@
 #include <diffuv/render/texture_layout.h>
 #include <diffuv/render/write_gltf.h>
 
+#include <boost/property_map/function_property_map.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -212,12 +214,22 @@ void run_param(const Param_options& options)
       diffuv::write_png(out.open(output_name(in.path, ".atlas.png")), layout, output_name(in.path, ".atlas.png"));
     }
   };
+  // Each corner's texture point found once (chart lookup, warps, packing),
+  // not once per file that reads it: the OBJ, the glb and the layout picture.
+  std::vector<Kernel::Point_2> corner_points;
+  auto each_corner_once = [&](auto corner_uv) {
+    corner_points.resize(in.mesh.number_of_halfedges() + in.mesh.number_of_removed_halfedges());
+    for(Mesh::Halfedge_index h : in.mesh.halfedges())
+      if(!in.mesh.is_border(h)) corner_points[h.idx()] = get(corner_uv, h);
+    return boost::make_function_property_map<Mesh::Halfedge_index>(
+        [&corner_points](Mesh::Halfedge_index h) { return corner_points[h.idx()]; });
+  };
   if(options.unit_squares)
-    write_textured(atlas.corner_uv_map());
+    write_textured(each_corner_once(atlas.corner_uv_map()));
   else if(options.stacked)
-    write_textured(atlas.corner_texture_map());
+    write_textured(each_corner_once(atlas.corner_texture_map()));
   else if(textured)
-    write_textured(diffuv::packed_corner_map(atlas, packing));
+    write_textured(each_corner_once(diffuv::packed_corner_map(atlas, packing)));
   if(options.svg) write_uv_layouts(out, in, result);
   if(outputs.uv) diffuv::write_uv_table(out.open(output_name(in.path, ".uv.csv")), atlas);
   if(outputs.patches) write_polygon_patches(out.open(output_name(in.path, ".patches.txt")), in, result.seg);
