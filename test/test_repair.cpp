@@ -511,4 +511,96 @@ TEST(Repair, RepairPatchListsTheFacesAndNeighboursAroundEachVertex)
   EXPECT_EQ(wrong_rings, 0u);
 }
 
+// find_defects() and mark_flat_interior_groups() walk the triangles once,
+// without the lists of faces around each vertex: checked against the walks
+// around each vertex they replaced, on cow flattened by dropping z (folds and
+// vertices wound twice everywhere) with a band of vertices taken as sides.
+TEST(Repair, DefectsAndFlatGroupsFoundWithoutTheFacesAroundEachVertex)
+{
+  const Mesh& cow = cgal_mesh("cow.off");
+  diffuv::internal::Repair_patch<Mesh, Point_3> p;
+  const std::size_t n = num_vertices(cow);
+  p.vertex.resize(n);
+  p.u.resize(n);
+  p.v.resize(n);
+  p.side_mask.assign(n, 0);
+  for(auto v : vertices(cow)) {
+    const Point_3& q = cow.point(v);
+    p.u[v.idx()] = q.x();
+    p.v[v.idx()] = q.y();
+    // Sides: thin bands of the cow across z, one side per band; some interior
+    // vertices then see border neighbours on one side only (flat groups).
+    for(int s = 0; s < 4; ++s)
+      if(std::abs(q.z() - (-0.3 + 0.2 * s)) < 0.02) p.side_mask[v.idx()] |= static_cast<std::uint8_t>(1u << s);
+  }
+  for(auto f : faces(cow)) {
+    std::array<std::size_t, 3> t{};
+    std::size_t k = 0;
+    for(auto v : CGAL::vertices_around_face(halfedge(f, cow), cow)) t[k++] = static_cast<std::size_t>(v.idx());
+    p.triangle.push_back(t);
+    p.flat.push_back((p.side_mask[t[0]] & p.side_mask[t[1]] & p.side_mask[t[2]]) != 0);
+  }
+  std::vector<bool> flat_by_sides = p.flat;
+  p.mark_flat_interior_groups();
+  const std::size_t defects = p.find_defects();
+  p.find_faces_of();
+
+  // The groups, grown vertex by vertex through the faces around each.
+  std::vector<bool> flat = flat_by_sides;
+  std::vector<std::size_t> component(n, n);
+  for(std::size_t seed = 0; seed < n; ++seed) {
+    if(p.side_mask[seed] || component[seed] < n || p.faces_of[seed].empty()) continue;
+    std::vector<std::size_t> members{seed};
+    component[seed] = seed;
+    std::uint8_t common = 0xF;
+    for(std::size_t k = 0; k < members.size(); ++k)
+      for(std::size_t f : p.faces_of[members[k]])
+        for(std::size_t j : p.triangle[f]) {
+          if(p.side_mask[j]) common &= p.side_mask[j];
+          else if(component[j] == n) {
+            component[j] = seed;
+            members.push_back(j);
+          }
+        }
+    if(common)
+      for(std::size_t i : members)
+        for(std::size_t f : p.faces_of[i]) flat[f] = true;
+  }
+  EXPECT_EQ(flat, p.flat);
+  const auto flat_count = std::count(flat.begin(), flat.end(), true);
+  EXPECT_GT(flat_count, std::count(flat_by_sides.begin(), flat_by_sides.end(), true));  // some groups were flat
+
+  // The defects, vertex by vertex through the faces around each.
+  std::size_t count = 0, bad_vertices = 0;
+  std::vector<bool> bad_face(p.triangle.size());
+  for(std::size_t f = 0; f < p.triangle.size(); ++f) {
+    const auto& t = p.triangle[f];
+    const double area = (p.u[t[1]] - p.u[t[0]]) * (p.v[t[2]] - p.v[t[0]]) - (p.u[t[2]] - p.u[t[0]]) * (p.v[t[1]] - p.v[t[0]]);
+    bad_face[f] = p.bad_face[f];
+    EXPECT_EQ(p.bad_face[f], !p.flat[f] && !(area > 0)) << "face " << f;  // the 1e-14 threshold aside, cow has none that small
+    count += bad_face[f];
+  }
+  for(std::size_t i = 0; i < n; ++i) {
+    double turn = 0;
+    int winding = 0;
+    for(std::size_t f : p.faces_of[i]) {
+      const auto& t = p.triangle[f];
+      const int k = t[0] == i ? 0 : (t[1] == i ? 1 : 2);
+      const std::size_t a = t[(k + 1) % 3], b = t[(k + 2) % 3];
+      const double ax = p.u[a] - p.u[i], ay = p.v[a] - p.v[i], bx = p.u[b] - p.u[i], by = p.v[b] - p.v[i];
+      if(p.side_mask[i])
+        turn += std::atan2(ax * by - ay * bx, ax * bx + ay * by);
+      else if((ay < 0) != (by < 0) && ax + ay / (ay - by) * (bx - ax) > 0)
+        winding += ay < 0 ? 1 : -1;
+    }
+    const bool bad = p.side_mask[i] ? !(turn < 2 * CGAL_PI - 1e-6) : winding != 1;
+    EXPECT_EQ(p.bad_vertex[i], bad) << "vertex " << i;
+    bad_vertices += bad;
+    if(bad)
+      for(std::size_t f : p.faces_of[i]) count += !bad_face[f];
+  }
+  EXPECT_GT(bad_vertices, 100u);
+  EXPECT_EQ(defects, count);
+}
+
 } // namespace

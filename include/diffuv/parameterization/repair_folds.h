@@ -154,7 +154,6 @@ Status repair_folds(const TriangleMesh& tm, VertexPointMap vpm,
     p.flat.push_back((p.side_mask[t[0]] & p.side_mask[t[1]] & p.side_mask[t[2]]) != 0);
     p.triangle.push_back(t);
   }
-  p.find_faces_of();
   p.mark_flat_interior_groups();
   r.flat_triangles = static_cast<std::size_t>(std::count(p.flat.begin(), p.flat.end(), true));
 
@@ -177,6 +176,9 @@ Status repair_folds(const TriangleMesh& tm, VertexPointMap vpm,
   r.folded_faces = p.find_defects();
   if(r.folded_faces == 0 && border_ok && !(near_folds && p.find_thin(options.max_angle_distortion).first > 0)) return Status();
 
+  // There is something to repair: the faces around each vertex, which the
+  // kernel moves and the region growth walk.
+  p.find_faces_of();
   // Nothing has moved yet: the map as it came, to count what the repair moves.
   const std::vector<double> u0 = p.u, v0 = p.v;
   auto write_back = [&]() {

@@ -95,30 +95,35 @@ struct Repair_patch {
 
   /// Marks as flat the faces around a connected group of interior vertices
   /// whose border neighbours all lie on one side: a convex combination of
-  /// points on a line stays on it (components across interior edges).
+  /// points on a line stays on it (groups joined across interior edges, by
+  /// union-find over the triangles: no list of faces around each vertex is
+  /// needed until the map has a defect to repair).
   void mark_flat_interior_groups()
   {
     const std::size_t n = size();
-    std::vector<std::size_t> component(n, n);
-    std::vector<std::size_t> members;
-    for(std::size_t seed = 0; seed < n; ++seed) {
-      if(side_mask[seed] || component[seed] < n || faces_of[seed].empty()) continue;
-      members.assign(1, seed);
-      component[seed] = seed;
-      std::uint8_t common = 0xF;
-      for(std::size_t k = 0; k < members.size(); ++k)
-        for(std::size_t f : faces_of[members[k]])
-          for(std::size_t j : triangle[f]) {
-            if(side_mask[j]) common &= side_mask[j];
-            else if(component[j] == n) {
-              component[j] = seed;
-              members.push_back(j);
-            }
-          }
-      if(common)
-        for(std::size_t i : members)
-          for(std::size_t f : faces_of[i]) flat[f] = true;
-    }
+    std::vector<std::size_t> parent(n);
+    for(std::size_t i = 0; i < n; ++i) parent[i] = i;
+    auto root = [&](std::size_t i) {
+      while(parent[i] != i) i = parent[i] = parent[parent[i]];
+      return i;
+    };
+    for(const Triangle& t : triangle)
+      for(int e = 0; e < 3; ++e) {
+        const std::size_t a = t[e], b = t[(e + 1) % 3];
+        if(side_mask[a] || side_mask[b]) continue;
+        const std::size_t ra = root(a), rb = root(b);
+        if(ra != rb) parent[std::max(ra, rb)] = std::min(ra, rb);
+      }
+    // The sides every border neighbour of each group lies on.
+    std::vector<std::uint8_t> common(n, 0xF);
+    for(const Triangle& t : triangle)
+      for(std::size_t i : t)
+        if(!side_mask[i])
+          for(std::size_t j : t)
+            if(side_mask[j]) common[root(i)] &= side_mask[j];
+    for(std::size_t f = 0; f < triangle.size(); ++f)
+      for(std::size_t i : triangle[f])
+        if(!side_mask[i] && common[root(i)]) flat[f] = true;
   }
 
   /// Local defects: a triangle that is not counter-clockwise (or degenerate),
@@ -128,41 +133,47 @@ struct Repair_patch {
   /// runs once around the square (monotone sides) is a local homeomorphism
   /// that is one-to-one on the border, hence one-to-one. So no overlap test is
   /// needed, before or after the repair (the tests check overlaps independently).
-  /// Returns the number of faces that are or touch a defect.
+  /// Returns the number of faces that are or touch a defect (a face counted
+  /// once for each defective vertex of it that is not itself a defect).
+  /// One pass over the triangles: each corner adds its share to its vertex, in
+  /// the triangles' order, so no list of faces around each vertex is needed.
   std::size_t find_defects()
   {
     const double total_area = 1.;  // the unit square
     const std::size_t n = size();
     bad_face.assign(triangle.size(), false);
     bad_vertex.assign(n, false);
+    std::vector<double> turn(n, 0.);  // each border vertex's fan angle
+    std::vector<int> winding(n, 0);   // each interior vertex's winding number
     std::size_t count = 0;
     for(std::size_t f = 0; f < triangle.size(); ++f) {
-      bad_face[f] = !flat[f] && !positive_triangle(triangle[f], u, v, total_area);
+      const Triangle& t = triangle[f];
+      bad_face[f] = !flat[f] && !positive_triangle(t, u, v, total_area);
       count += bad_face[f];
-    }
-    for(std::size_t i = 0; i < n; ++i) {
       // Interior vertex: the winding number of its link around it, counted
       // as signed crossings of the ray from the vertex along +u (no
       // trigonometry; the link's edges are the faces' far edges). Border
       // vertex: the total angle of its open fan, which must stay below 2 pi.
-      double turn = 0;
-      int winding = 0;
-      for(std::size_t f : faces_of[i]) {
-        const auto& t = triangle[f];
-        const int k = t[0] == i ? 0 : (t[1] == i ? 1 : 2);
-        const std::size_t a = t[(k + 1) % 3], b = t[(k + 2) % 3];
+      for(int k = 0; k < 3; ++k) {
+        const std::size_t i = t[k], a = t[(k + 1) % 3], b = t[(k + 2) % 3];
         const double ax = u[a] - u[i], ay = v[a] - v[i], bx = u[b] - u[i], by = v[b] - v[i];
         if(side_mask[i]) {
-          turn += std::atan2(ax * by - ay * bx, ax * bx + ay * by);
+          turn[i] += std::atan2(ax * by - ay * bx, ax * bx + ay * by);
         } else if((ay < 0) != (by < 0)) {
           const double x = ax + ay / (ay - by) * (bx - ax);  // where edge ab meets v = v_i
-          if(x > 0) winding += ay < 0 ? 1 : -1;
+          if(x > 0) winding[i] += ay < 0 ? 1 : -1;
         }
       }
-      bad_vertex[i] = side_mask[i] ? !(turn < 2 * CGAL_PI - 1e-6) : winding != 1;
-      if(bad_vertex[i])
-        for(std::size_t f : faces_of[i]) count += !bad_face[f];
     }
+    bool any_bad_vertex = false;
+    for(std::size_t i = 0; i < n; ++i) {
+      bad_vertex[i] = side_mask[i] ? !(turn[i] < 2 * CGAL_PI - 1e-6) : winding[i] != 1;
+      any_bad_vertex = any_bad_vertex || bad_vertex[i];
+    }
+    if(any_bad_vertex)
+      for(std::size_t f = 0; f < triangle.size(); ++f)
+        if(!bad_face[f])
+          for(std::size_t i : triangle[f]) count += bad_vertex[i];
     return count;
   }
 
