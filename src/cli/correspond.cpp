@@ -365,7 +365,8 @@ void add_correspond_command(CLI::App& app)
   cmd->add_flag("--no-split-caps", options->no_split_caps, "Keep caps whole (on both meshes)");
   add_strict_input_option(cmd, options->strict_input);
   add_regions_from_option(cmd, options->regions_from);
-  cmd->footer("Writes OUTPUT/correspondence.csv (vertex,face,b0,b1,b2,x,y,z: one row per vertex of A in file order; "
+  cmd->footer("Writes OUTPUT/correspondence.csv (vertex,face,b0,b1,b2,x,y,z: one row per vertex of A in file order, "
+              "then one per vertex copy the input repair added to A (splitting a non-manifold vertex or edge); "
               "face indexes B's faces in file order, b0..b2 weight that face's vertices in the order the file lists "
               "them, x,y,z is the point on B; face -1: not mapped), OUTPUT/transfer.ply (A with B's vertex colours, "
               "or with B's position colours if B has none) and OUTPUT/reference.ply (B with those colours).\n"

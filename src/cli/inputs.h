@@ -124,8 +124,8 @@ inline void add_patch_options(CLI::App* cmd, Patch_cli_options& o)
   cmd->add_option("--patches", o.patches,
                   "quads: seeds for about N patches to start from (default: one cell per 900 faces, about five "
                   "patches each); the cell-complex rules and the refinement then add cells where the surface needs "
-                  "them, so below a few hundred they decide the count (cow: 231 patches for N = 1 to 6, 272 by "
-                  "default, 317 for 100, 358 for 300); voronoi: N seeds to start from (default 12; more are added until every "
+                  "them, so below a few hundred they decide the count (cow: 297 patches for N = 1 to 6, 291 by "
+                  "default, 338 for 100, 358 for 300); voronoi: N seeds to start from (default 12; more are added until every "
                   "patch is a disc). A disc whose map as one patch is good stays one patch unless N is given; with voronoi a "
                   "disc is always one patch, and on a mesh of discs the option has no effect (a warning says so)")
       ->check(number_in(1, 100000));

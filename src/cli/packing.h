@@ -32,9 +32,9 @@ inline std::string packing_summary(std::size_t charts, const Param_options& o, c
     std::snprintf(within, sizeof within, " (each chart's within %.3g %%)", 100. * used.density_tolerance);
   char line[300];
   std::snprintf(line, sizeof line,
-                "atlas: %zu charts packed into %d x %d texels (gutter %d, %s): %.1f %% of the texels covered, %.4g "
+                "atlas: %zu chart%s packed into %d x %d texels (gutter %d, %s): %.1f %% of the texels covered, %.4g "
                 "texels per unit of length%s",
-                charts, o.texture_size, o.texture_size, o.gutter, o.packer.c_str(), 100. * packing.coverage,
+                charts, charts == 1 ? "" : "s", o.texture_size, o.texture_size, o.gutter, o.packer.c_str(), 100. * packing.coverage,
                 packing.texels_per_unit, within);
   return line;
 }

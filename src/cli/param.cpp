@@ -224,12 +224,14 @@ void run_param(const Param_options& options)
     return boost::make_function_property_map<Mesh::Halfedge_index>(
         [&corner_points](Mesh::Halfedge_index h) { return corner_points[h.idx()]; });
   };
-  if(options.unit_squares)
-    write_textured(each_corner_once(atlas.corner_uv_map()));
-  else if(options.stacked)
-    write_textured(each_corner_once(atlas.corner_texture_map()));
-  else if(textured)
-    write_textured(each_corner_once(diffuv::packed_corner_map(atlas, packing)));
+  if(textured) {  // else no file reads texture points
+    if(options.unit_squares)
+      write_textured(each_corner_once(atlas.corner_uv_map()));
+    else if(options.stacked)
+      write_textured(each_corner_once(atlas.corner_texture_map()));
+    else
+      write_textured(each_corner_once(diffuv::packed_corner_map(atlas, packing)));
+  }
   if(options.svg) write_uv_layouts(out, in, result);
   if(outputs.uv) diffuv::write_uv_table(out.open(output_name(in.path, ".uv.csv")), atlas);
   if(outputs.patches) write_polygon_patches(out.open(output_name(in.path, ".patches.txt")), in, result.seg);
