@@ -338,6 +338,24 @@ TEST_P(BadInput, GivesTheCataloguedAnswer)
 INSTANTIATE_TEST_SUITE_P(Catalogue, BadInput, ::testing::ValuesIn(catalogue()),
                          [](const ::testing::TestParamInfo<Catalogue_entry>& info) { return info.param.name; });
 
-// An existing output folder is written into: diffuv's files are replaced (each
+// correspond warns of zero-area faces as param does, once per mesh, and maps.
+TEST_F(Tool, CorrespondWarnsOfZeroAreaFacesOnEitherMesh)
+{
+  // The inner vertex moved onto vertex 1: two triangles collapse.
+  write("flat.off", "OFF\n9 8 0\n0 0 0\n1 0 0\n2 0 0\n0 1 0\n1 0 0\n2 1 0\n0 2 0\n1 2 0\n2 2 0\n" + grid_faces);
+  write("grid.off", "OFF\n9 8 0\n" + grid_points + grid_faces);
+  write("l.txt", "0\n0\n0\n0\n0\n0\n0\n0\n");
+  const std::string d = dir_.string();
+  const Tool_run both = run("correspond " + d + "/flat.off " + d + "/flat.off --labels-a " + d +
+                            "/l.txt --transfer-labels -o " + out_dir().string());
+  EXPECT_EQ(both.code, 0) << both.err;
+  const std::string warning = "diffuv: warning: " + d + "/flat.off: 2 faces have zero area; their (u,v) triangles may be flat\n";
+  EXPECT_EQ(both.err, warning + warning);
+  EXPECT_EQ(read_csv(out_dir() / "correspondence.csv").size(), 10u);  // a header and 9 vertices
+  const Tool_run clean = run("correspond " + d + "/grid.off " + d + "/flat.off --labels-a " + d +
+                             "/l.txt --transfer-labels -o " + out_dir().string());
+  EXPECT_EQ(clean.code, 0) << clean.err;
+  EXPECT_EQ(clean.err, warning);  // B only
+}
 
 } // namespace

@@ -275,6 +275,8 @@ void run_correspond(const Correspond_options& o)
             ;
   if(const std::string repaired = repair_line(a); !repaired.empty()) std::cout << "A " << repaired << '\n';
   if(const std::string repaired = repair_line(b); !repaired.empty()) std::cout << "B " << repaired << '\n';
+  warn_of_zero_area_faces(a);
+  warn_of_zero_area_faces(b);
   std::cout << "regions matched: " << count_text(match.matched_labels.size(), "label") << ", "
             << count_text(match.matched_patches, "patch", "patches") << "\n";
   if(!both.joined.empty()) {
